@@ -1,0 +1,36 @@
+# Finds osgGlyphs' third-party dependencies as Debian bookworm packages provide them.
+# Included by the build and by the installed osgGlyphsConfig.cmake, so that a consumer
+# gets the same OpenSceneGraph targets the library was built against.
+# Every missing dependency stops configuration with the Debian package that provides it.
+
+find_package(PkgConfig QUIET)
+if(NOT PkgConfig_FOUND)
+    message(FATAL_ERROR "osgGlyphs: pkg-config was not found. Install the Debian package 'pkg-config'.")
+endif()
+
+# osgglyphs_require(<prefix> <pkg-config module> <Debian package>)
+# Creates the imported target PkgConfig::<prefix> or fails with the package to install.
+function(osgglyphs_require prefix module debian_package)
+    if(TARGET PkgConfig::${prefix})
+        return()
+    endif()
+    pkg_check_modules(${prefix} QUIET IMPORTED_TARGET GLOBAL ${module})
+    if(NOT ${prefix}_FOUND)
+        message(FATAL_ERROR
+            "osgGlyphs: the dependency '${module}' was not found. "
+            "Install the Debian package '${debian_package}' (apt-get install ${debian_package}).")
+    endif()
+endfunction()
+
+set(_osgglyphs_osg_package libopenscenegraph-dev)
+osgglyphs_require(OSG "openscenegraph-osg>=3.6" ${_osgglyphs_osg_package})
+foreach(_module osgDB osgUtil osgGA osgViewer osgText)
+    osgglyphs_require(${_module} openscenegraph-${_module} ${_osgglyphs_osg_package})
+endforeach()
+
+# The private dependencies are only needed while building osgGlyphs itself.
+if(NOT OSGGLYPHS_FIND_PUBLIC_ONLY)
+    osgglyphs_require(OSMesa osmesa libosmesa6-dev)
+    osgglyphs_require(EGL egl libegl-dev)
+    osgglyphs_require(GLM glm libglm-dev)
+endif()
