@@ -1,5 +1,6 @@
 // osgglyphviewer: views point data files as GPU shader glyphs, in a window or headless.
 
+#include <osgGlyphs/GlyphCloud>
 #include <osgGlyphs/OffscreenViewer>
 #include <osgGlyphs/Version>
 
@@ -10,26 +11,47 @@
 
 #include <chrono>
 #include <iostream>
+#include <random>
 
 namespace
 {
 
-/** The built-in default scene. */
+/** The built-in default scene: a seeded random cloud of spheres coloured by a scalar,
+ * intersecting a fixed-function box and sphere. */
 osg::ref_ptr<osg::Node> createDefaultScene()
 {
-    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-    auto add = [&](osg::Shape* shape, const osg::Vec4& color)
+    const unsigned int count = 2000;
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
+    osg::ref_ptr<osg::FloatArray> radii = new osg::FloatArray;
+    osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray;
+    for (unsigned int i = 0; i < count; ++i)
     {
-        osg::ref_ptr<osg::ShapeDrawable> drawable = new osg::ShapeDrawable(shape);
-        drawable->setColor(color);
-        geode->addDrawable(drawable.get());
-    };
-    add(new osg::Sphere(osg::Vec3(-1.2f, 0.0f, 0.0f), 1.0f), osg::Vec4(0.27f, 0.51f, 0.71f, 1.0f));
-    add(new osg::Box(osg::Vec3(1.2f, 0.0f, 0.0f), 1.5f), osg::Vec4(0.85f, 0.55f, 0.2f, 1.0f));
+        const osg::Vec3 p(2.0f * unit(random), 2.0f * unit(random), 2.0f * unit(random));
+        positions->push_back(p);
+        radii->push_back(0.06f + 0.05f * (unit(random) + 1.0f));
+        scalars->push_back(p.z());
+    }
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = new osgGlyphs::GlyphCloud;
+    cloud->setPositions(positions.get());
+    cloud->setRadii(radii.get());
+    cloud->setScalars(scalars.get());
+
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(cloud.get());
+    osg::ref_ptr<osg::ShapeDrawable> box =
+        new osg::ShapeDrawable(new osg::Box(osg::Vec3(0.0f, 0.0f, -1.0f), 3.0f, 3.0f, 0.2f));
+    box->setColor(osg::Vec4(0.75f, 0.75f, 0.75f, 1.0f));
+    geode->addDrawable(box.get());
+    osg::ref_ptr<osg::ShapeDrawable> sphere =
+        new osg::ShapeDrawable(new osg::Sphere(osg::Vec3(0.0f, 0.0f, 0.3f), 0.8f));
+    sphere->setColor(osg::Vec4(0.85f, 0.3f, 0.25f, 1.0f));
+    geode->addDrawable(sphere.get());
     return geode;
 }
 
-} // namespace
+}
 
 int main(int argc, char** argv)
 {
@@ -81,7 +103,7 @@ int main(int argc, char** argv)
         return 1;
     viewer->setSceneData(createDefaultScene());
     viewer->getCamera()->setClearColor(osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f));
-    viewer->getCamera()->setViewMatrixAsLookAt(osg::Vec3d(0.0, -9.0, 3.0), osg::Vec3d(0.0, 0.0, 0.0),
+    viewer->getCamera()->setViewMatrixAsLookAt(osg::Vec3d(2.5, -9.0, 4.0), osg::Vec3d(0.0, 0.0, 0.0),
                                                osg::Vec3d(0.0, 0.0, 1.0));
     viewer->frame();
     if (!osgDB::writeImageFile(*viewer->getColorImage(), output))

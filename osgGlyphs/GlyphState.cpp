@@ -1,0 +1,113 @@
+#include <osgGlyphs/GlyphState>
+
+#include "ShaderSource.h"
+
+#include <osg/Uniform>
+
+using namespace osgGlyphs;
+
+namespace
+{
+
+const char* const COLOR_SCALAR_DEFINE = "OSGGLYPHS_COLOR_SCALAR";
+const char* const COLOR_RGBA_DEFINE = "OSGGLYPHS_COLOR_RGBA";
+
+struct ShaderStage
+{
+    osg::Shader::Type type;
+    const char* file;
+};
+
+const ShaderStage GLYPH_STAGES[] = {{osg::Shader::VERTEX, "glyph.vert"},
+                                    {osg::Shader::GEOMETRY, "glyph.geom"},
+                                    {osg::Shader::FRAGMENT, "glyph.frag"}};
+
+}
+
+const char* const osgGlyphs::GLYPH_LIT_DEFINE = "OSGGLYPHS_LIT";
+
+void osgGlyphs::setGlyphLighting(osg::StateSet& stateSet, bool lit)
+{
+    stateSet.setDefine(GLYPH_LIT_DEFINE, osg::StateAttribute::OVERRIDE |
+                                             (lit ? osg::StateAttribute::ON : osg::StateAttribute::OFF));
+}
+
+GlyphStateSets* GlyphStateSets::instance()
+{
+    static osg::ref_ptr<GlyphStateSets> s_instance = new GlyphStateSets;
+    return s_instance.get();
+}
+
+osg::ref_ptr<osg::Program> GlyphStateSets::createProgram(GlyphShape) const
+{
+    osg::ref_ptr<osg::Program> program = new osg::Program;
+    program->setName("osgGlyphs");
+    for (const ShaderStage& stage : GLYPH_STAGES)
+    {
+        osg::ref_ptr<osg::Shader> shader = new osg::Shader(stage.type, detail::loadShaderSource(stage.file));
+        shader->setName(stage.file);
+        program->addShader(shader.get());
+    }
+    program->addBindAttribLocation("osgGlyphs_packed", PACKED_ATTRIBUTE);
+    program->addBindAttribLocation("osgGlyphs_color", COLOR_ATTRIBUTE);
+    return program;
+}
+
+osg::Program* GlyphStateSets::getProgram(GlyphShape shape)
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    osg::ref_ptr<osg::Program>& program = _programs[shape];
+    if (!program)
+        program = createProgram(shape);
+    return program.get();
+}
+
+osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
+{
+    osg::Program* program = getProgram(variant.shape);
+    std::lock_guard<std::mutex> lock(_mutex);
+    osg::ref_ptr<osg::StateSet>& stateSet = _stateSets[variant];
+    if (stateSet)
+        return stateSet.get();
+
+    stateSet = new osg::StateSet;
+    stateSet->setAttributeAndModes(program);
+    if (variant.lit)
+        stateSet->setDefine(GLYPH_LIT_DEFINE);
+    if (variant.colorMode == GlyphColorMode::RGBA)
+        stateSet->setDefine(COLOR_RGBA_DEFINE);
+    if (variant.colorMode == GlyphColorMode::Scalar)
+    {
+        stateSet->setDefine(COLOR_SCALAR_DEFINE);
+        const ColorMap* colorMap = variant.colorMap ? variant.colorMap : ColorMap::getBuiltin("viridis");
+        stateSet->setTextureAttribute(COLORMAP_UNIT, colorMap->getTexture());
+        stateSet->addUniform(new osg::Uniform("osgGlyphs_colormap", static_cast<int>(COLORMAP_UNIT)));
+    }
+    return stateSet.get();
+}
+
+void GlyphStateSets::reloadShaders()
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    for (auto& entry : _programs)
+    {
+        for (unsigned int i = 0; i < entry.second->getNumShaders(); ++i)
+        {
+            osg::Shader* shader = entry.second->getShader(i);
+            shader->setShaderSource(detail::loadShaderSource(shader->getName()));
+            shader->dirtyShader();
+        }
+    }
+}
+
+void GlyphStateSets::releaseGLObjects(osg::State* state) const
+{
+    for (const auto& entry : _stateSets)
+        entry.second->releaseGLObjects(state);
+}
+
+void GlyphStateSets::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    for (auto& entry : _stateSets)
+        entry.second->resizeGLObjectBuffers(maxSize);
+}

@@ -1,0 +1,25 @@
+/* osgGlyphs - private: the library's text resources (shaders, colour maps). Not installed. */
+
+#ifndef OSGGLYPHS_RESOURCES_H
+#define OSGGLYPHS_RESOURCES_H 1
+
+#include <string>
+
+namespace osgGlyphs
+{
+namespace detail
+{
+
+/** Embedded copies, generated at build time from shaders/ and share/colormaps/. */
+const char* getEmbeddedShader(const std::string& name);
+const char* getEmbeddedColorMap(const std::string& name);
+
+/** The text of a resource such as "osgGlyphs/glyph.frag" or "osgGlyphs/colormaps/viridis.txt":
+ * a file of that name on OSG's data path (OSG_FILE_PATH) if there is one, else the embedded
+ * copy, else an empty string. */
+std::string readResource(const std::string& name);
+
+}
+}
+
+#endif

@@ -1,0 +1,47 @@
+// osgGlyphs: the per-glyph vertex attributes and the uniforms that decode them.
+//
+// osgGlyphs_packed, one 32-bit word per glyph:
+//   bits  0..15  radius / osgGlyphs_radiusScale as an IEEE half float (0: skip the glyph)
+//   bits 16..31  scalar, quantised to 0..65535 over the data's own range
+// osgGlyphs_color: RGBA8 per glyph (OSGGLYPHS_COLOR_RGBA only).
+
+in uint osgGlyphs_packed;
+#ifdef OSGGLYPHS_COLOR_RGBA
+in vec4 osgGlyphs_color;
+#endif
+
+uniform float osgGlyphs_radiusScale;
+uniform vec4 osgGlyphs_baseColor;
+#ifdef OSGGLYPHS_COLOR_SCALAR
+uniform sampler1D osgGlyphs_colormap;
+uniform vec2 osgGlyphs_scalarToColormap; // colormap coordinate = quantised * x + y
+#endif
+
+float decodeHalf(uint bits)
+{
+    uint exponent = (bits >> 10u) & 31u;
+    uint mantissa = bits & 1023u;
+    if (exponent == 0u)
+        return float(mantissa) * (1.0 / 16777216.0);
+    return uintBitsToFloat(((bits & 32768u) << 16u) | ((exponent + 112u) << 23u) | (mantissa << 13u));
+}
+
+float glyphRadius()
+{
+    return decodeHalf(osgGlyphs_packed & 65535u) * osgGlyphs_radiusScale;
+}
+
+vec4 glyphColor()
+{
+#if defined(OSGGLYPHS_COLOR_SCALAR)
+    float quantised = float(osgGlyphs_packed >> 16u) * (1.0 / 65535.0);
+    float t = clamp(quantised * osgGlyphs_scalarToColormap.x + osgGlyphs_scalarToColormap.y, 0.0, 1.0);
+    // Texel i holds the map at i / (size - 1): sample between the first and last texel centres.
+    float size = float(textureSize(osgGlyphs_colormap, 0));
+    return texture(osgGlyphs_colormap, (t * (size - 1.0) + 0.5) / size);
+#elif defined(OSGGLYPHS_COLOR_RGBA)
+    return osgGlyphs_color;
+#else
+    return osgGlyphs_baseColor;
+#endif
+}

@@ -1,0 +1,58 @@
+// osgGlyphs: the exact sphere, its screen-space bound and its ray intersection.
+
+/** The two values of x/z (or y/z) of the planes through the eye that touch the sphere,
+  * in the 2D section (lateral, z); requires the sphere to lie wholly in front of the eye. */
+vec2 tangentSlopes(float lateral, float z, float radius)
+{
+    float a = z * z - radius * radius;
+    float b = lateral * z;
+    float root = radius * sqrt(max(lateral * lateral + z * z - radius * radius, 0.0));
+    return vec2(b - root, b + root) / a;
+}
+
+/** The exact NDC rectangle (xmin, ymin, xmax, ymax) of the sphere's projection, and the NDC
+  * depth of its nearest point. A sphere that crosses the near plane covers the whole view, so
+  * its cut is drawn; one wholly behind the near plane returns false. */
+bool sphereScreenBound(vec3 center, float radius, out vec4 box, out float nearestNdcZ)
+{
+    float beyondNear = distanceBeyondNearPlane(center);
+    if (beyondNear < -radius)
+        return false;
+    if (beyondNear <= radius)
+    {
+        box = vec4(-1.0, -1.0, 1.0, 1.0);
+        nearestNdcZ = -1.0;
+        return true;
+    }
+    mat4 p = gl_ProjectionMatrix;
+    if (isOrthographic())
+    {
+        vec4 lo = p * vec4(center - vec3(radius, radius, 0.0), 1.0);
+        vec4 hi = p * vec4(center + vec3(radius, radius, 0.0), 1.0);
+        box = vec4(min(lo.xy, hi.xy), max(lo.xy, hi.xy));
+    }
+    else
+    {
+        // x_ndc = -(p00 * x/z + p20) on a plane x = k z through the eye.
+        vec2 xs = -(p[0][0] * tangentSlopes(center.x, center.z, radius) + p[2][0]);
+        vec2 ys = -(p[1][1] * tangentSlopes(center.y, center.z, radius) + p[2][1]);
+        box = vec4(min(xs.x, xs.y), min(ys.x, ys.y), max(xs.x, xs.y), max(ys.x, ys.y));
+    }
+    nearestNdcZ = ndcDepth(vec3(0.0, 0.0, center.z + radius));
+    return true;
+}
+
+/** Where the ray origin + t * direction (unit) enters and leaves the sphere; false if it misses. */
+bool intersectSphere(vec3 origin, vec3 direction, vec4 sphere, out float tEnter, out float tLeave)
+{
+    vec3 m = origin - sphere.xyz;
+    float b = dot(m, direction);
+    vec3 closest = m - b * direction; // numerically stable for small, distant spheres
+    float h2 = sphere.w * sphere.w - dot(closest, closest);
+    if (h2 < 0.0)
+        return false;
+    float h = sqrt(h2);
+    tEnter = -b - h;
+    tLeave = -b + h;
+    return true;
+}
