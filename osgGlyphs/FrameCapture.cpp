@@ -34,6 +34,10 @@ void FrameCapture::operator()(osg::RenderInfo& renderInfo) const
         _glRenderer = text(GL_RENDERER);
     }
 
+    const osg::State& state = *renderInfo.getState();
+    _projection = state.getProjectionMatrix();
+    _view = camera->getViewMatrix();
+
     const int x = static_cast<int>(viewport->x()), y = static_cast<int>(viewport->y());
     const int width = static_cast<int>(viewport->width()), height = static_cast<int>(viewport->height());
     _color->readPixels(x, y, width, height, GL_RGBA, GL_UNSIGNED_BYTE);

@@ -174,8 +174,6 @@ void GlyphCloud::setMaterial(float ambient, float specular, float shininess)
 void GlyphCloud::dirtyGlyphs()
 {
     updatePackedAttributes();
-    if (_positions.valid())
-        _positions->dirty();
     dirtyBound();
 }
 
@@ -232,7 +230,7 @@ void GlyphCloud::updatePackedAttributes()
     unsigned int badPositions = 0, badRadii = 0, badScalars = 0;
     const double quantisationScale =
         _dataMax > _dataMin ? 65535.0 / (double(_dataMax) - double(_dataMin)) : 0.0;
-    _packed->resize(count);
+    std::vector<uint32_t> packed(count);
     for (size_t i = 0; i < count; ++i)
     {
         uint16_t halfRadius = HALF_ONE;
@@ -260,11 +258,17 @@ void GlyphCloud::updatePackedAttributes()
             ++badPositions;
             halfRadius = 0;
         }
-        (*_packed)[i] = pack(radiusValid ? halfRadius : 0, quantised);
+        packed[i] = pack(radiusValid ? halfRadius : 0, quantised);
     }
     _numSkipped = 0;
-    for (size_t i = 0; i < count; ++i)
-        _numSkipped += ((*_packed)[i] & 0xffffu) == 0 ? 1 : 0;
+    for (uint32_t word : packed)
+        _numSkipped += (word & 0xffffu) == 0 ? 1 : 0;
+    // Re-upload only when the packed words changed.
+    if (!std::equal(packed.begin(), packed.end(), _packed->begin(), _packed->end()))
+    {
+        _packed->assign(packed.begin(), packed.end());
+        _packed->dirty();
+    }
     _numGlyphs = static_cast<unsigned int>(count);
 
     auto report = [&](unsigned int bad, const char* problem)
@@ -278,7 +282,6 @@ void GlyphCloud::updatePackedAttributes()
            "have a radius that is not finite and > 0");
     report(badScalars, "have a non-finite scalar (NaN or inf)");
 
-    _packed->dirty();
     _drawArrays->setCount(static_cast<GLsizei>(count));
     _radiusScaleUniform->set(_radiusScale);
     if (_autoRange)
@@ -341,6 +344,7 @@ osg::BoundingBox GlyphCloud::computeBoundingBox() const
 
 void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
 {
+    GlyphStateSets::observeContext(renderInfo.getContextID()); // a map lookup once registered
     // The program is shared between clouds; each cloud sets its own values before drawing.
     if (const osg::Program::PerContextProgram* program = renderInfo.getState()->getLastAppliedProgramObject())
     {

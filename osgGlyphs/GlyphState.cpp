@@ -2,6 +2,8 @@
 
 #include "ShaderSource.h"
 
+#include <osg/ContextData>
+#include <osg/GLObjects>
 #include <osg/Uniform>
 
 using namespace osgGlyphs;
@@ -21,6 +23,30 @@ struct ShaderStage
 const ShaderStage GLYPH_STAGES[] = {{osg::Shader::VERTEX, "glyph.vert"},
                                     {osg::Shader::GEOMETRY, "glyph.geom"},
                                     {osg::Shader::FRAGMENT, "glyph.frag"}};
+
+/** Lives in a context's osg::ContextData: when OSG deletes or discards that context's GL
+ * objects, it releases the shared glyph state of that context, which no scene graph under
+ * the context's cameras may reach any more (a later context could reuse the ID). */
+class GlyphContextObserver : public osg::GraphicsObjectManager
+{
+public:
+    explicit GlyphContextObserver(unsigned int contextID)
+        : osg::GraphicsObjectManager("osgGlyphs::GlyphContextObserver", contextID)
+    {
+    }
+    void flushDeletedGLObjects(double, double&) override {}
+    void flushAllDeletedGLObjects() override {}
+    void deleteAllGLObjects() override { release(); }
+    void discardAllGLObjects() override { release(); }
+
+private:
+    void release()
+    {
+        osg::ref_ptr<osg::State> state = new osg::State;
+        state->setContextID(getContextID());
+        GlyphStateSets::instance()->releaseGLObjects(state.get());
+    }
+};
 
 }
 
@@ -100,14 +126,23 @@ void GlyphStateSets::reloadShaders()
     }
 }
 
+void GlyphStateSets::observeContext(unsigned int contextID)
+{
+    osg::get<GlyphContextObserver>(contextID);
+}
+
 void GlyphStateSets::releaseGLObjects(osg::State* state) const
 {
+    std::lock_guard<std::mutex> lock(_mutex);
+    for (const auto& entry : _programs)
+        entry.second->releaseGLObjects(state);
     for (const auto& entry : _stateSets)
         entry.second->releaseGLObjects(state);
 }
 
 void GlyphStateSets::resizeGLObjectBuffers(unsigned int maxSize)
 {
+    std::lock_guard<std::mutex> lock(_mutex);
     for (auto& entry : _stateSets)
         entry.second->resizeGLObjectBuffers(maxSize);
 }

@@ -147,10 +147,9 @@ osg::Vec3d Frame::project(const osg::Vec3d& world) const
 void Frame::pixelRay(double wx, double wy, osg::Vec3d& origin, osg::Vec3d& direction) const
 {
     const osg::Matrixd inverse = osg::Matrixd::inverse(view * projection);
-    const osg::Vec3d ndc(2.0 * wx / width() - 1.0, 2.0 * wy / height() - 1.0, 0.0);
-    const osg::Vec3d onNear = osg::Vec3d(ndc.x(), ndc.y(), -1.0) * inverse;
-    origin = osg::Vec3d(0.0, 0.0, 0.0) * osg::Matrixd::inverse(view);
-    direction = onNear - origin;
+    const double x = 2.0 * wx / width() - 1.0, y = 2.0 * wy / height() - 1.0;
+    origin = osg::Vec3d(x, y, -1.0) * inverse;
+    direction = osg::Vec3d(x, y, 1.0) * inverse - origin;
     direction.normalize();
 }
 
@@ -188,8 +187,8 @@ Frame Renderer::render(osg::Node* scene)
     Frame frame;
     frame.color = new osg::Image(*_viewer->getColorImage(), osg::CopyOp::DEEP_COPY_ALL);
     frame.depth = new osg::Image(*_viewer->getDepthImage(), osg::CopyOp::DEEP_COPY_ALL);
-    frame.view = _viewer->getCamera()->getViewMatrix();
-    frame.projection = _viewer->getCamera()->getProjectionMatrix();
+    frame.view = _viewer->getFrameCapture()->getViewMatrix();
+    frame.projection = _viewer->getFrameCapture()->getProjectionMatrix();
     return frame;
 }
 
@@ -198,6 +197,11 @@ std::string outputPath(const std::string& fileName)
     const std::string directory = OSGGLYPHS_TEST_OUTPUT_DIR;
     osgDB::makeDirectory(directory);
     return directory + "/" + fileName;
+}
+
+void saveFrame(const Frame& frame, const std::string& name)
+{
+    osgDB::writeImageFile(*frame.color, outputPath(name + ".png"));
 }
 
 ::testing::AssertionResult matchesBaseline(const Frame& frame, const std::string& name,
@@ -307,17 +311,4 @@ std::string outputPath(const std::string& fileName)
     return ::testing::AssertionFailure() << report.str();
 }
 
-bool intersectSphere(const osg::Vec3d& origin, const osg::Vec3d& direction, const osg::Vec3d& center,
-                     double radius, double& distance)
-{
-    const osg::Vec3d m = origin - center;
-    const double b = m * direction;
-    const double c = m * m - radius * radius;
-    const double discriminant = b * b - c;
-    if (discriminant < 0.0)
-        return false;
-    distance = -b - std::sqrt(discriminant);
-    return distance > 0.0;
 }
-
-} // namespace osgGlyphsTest

@@ -37,7 +37,8 @@ struct Frame
 
     /** Window coordinates (pixels, depth) of a world-space point. */
     osg::Vec3d project(const osg::Vec3d& world) const;
-    /** World-space eye position and unit direction of the ray through window point (wx, wy). */
+    /** The ray through window point (wx, wy): its world-space point on the near plane and its
+     * unit direction, for perspective and orthographic projections alike. */
     void pixelRay(double wx, double wy, osg::Vec3d& origin, osg::Vec3d& direction) const;
     /** Window depth of a world-space point, as fixed-function geometry would write it. */
     double windowDepth(const osg::Vec3d& world) const { return project(world).z(); }
@@ -91,9 +92,8 @@ struct Tolerance
 ::testing::AssertionResult coverageMatches(const Frame& frame, const std::function<bool(int, int)>& expected,
                                            int mismatchBudget, const std::string& name);
 
-/** Nearest hit of a ray with a sphere, or false. */
-bool intersectSphere(const osg::Vec3d& origin, const osg::Vec3d& direction, const osg::Vec3d& center,
-                     double radius, double& distance);
+/** Writes the frame's colour as <name>.png into the output folder, for people to look at. */
+void saveFrame(const Frame& frame, const std::string& name);
 
 /** Where failure images go: the build tree's tests/output folder. */
 std::string outputPath(const std::string& fileName);

@@ -1,7 +1,7 @@
 // A lit fixed-function scene (an osg::ShapeDrawable box and sphere under OSG's headlight),
 // checked against ray-cast analytic coverage and depth, and against its baseline.
 
-#include "RenderHarness.h"
+#include "AnalyticScene.h"
 
 #include <osg/Geode>
 #include <osg/ShapeDrawable>
@@ -35,57 +35,16 @@ osg::ref_ptr<osg::Node> createScene()
     return geode;
 }
 
-/** Slab intersection of a ray with the axis-aligned box; the entry distance, or false. */
-bool intersectBox(const osg::Vec3d& origin, const osg::Vec3d& direction, double& distance)
+AnalyticScene createAnalyticScene()
 {
-    double tNear = -std::numeric_limits<double>::infinity(), tFar = std::numeric_limits<double>::infinity();
-    for (int axis = 0; axis < 3; ++axis)
-    {
-        const double lo = BOX_CENTER[axis] - BOX_HALF, hi = BOX_CENTER[axis] + BOX_HALF;
-        if (std::fabs(direction[axis]) < 1e-12)
-        {
-            if (origin[axis] < lo || origin[axis] > hi)
-                return false;
-            continue;
-        }
-        double t0 = (lo - origin[axis]) / direction[axis], t1 = (hi - origin[axis]) / direction[axis];
-        if (t0 > t1)
-            std::swap(t0, t1);
-        tNear = std::max(tNear, t0);
-        tFar = std::min(tFar, t1);
-    }
-    distance = tNear;
-    return tNear <= tFar && tNear > 0.0;
+    AnalyticScene scene;
+    scene.addBox(BOX_CENTER - osg::Vec3d(BOX_HALF, BOX_HALF, BOX_HALF),
+                 BOX_CENTER + osg::Vec3d(BOX_HALF, BOX_HALF, BOX_HALF));
+    scene.addSphere(SPHERE_CENTER, SPHERE_RADIUS);
+    return scene;
 }
 
-struct Hit
-{
-    bool box = false;
-    bool sphere = false;
-    double distance = std::numeric_limits<double>::infinity();
-    osg::Vec3d point;
-};
-
-Hit castRay(const Frame& frame, int x, int y)
-{
-    osg::Vec3d origin, direction;
-    frame.pixelRay(x + 0.5, y + 0.5, origin, direction);
-    Hit hit;
-    double t = 0.0;
-    if (intersectBox(origin, direction, t))
-    {
-        hit.box = true;
-        hit.distance = t;
-    }
-    if (intersectSphere(origin, direction, SPHERE_CENTER, SPHERE_RADIUS, t) && t < hit.distance)
-    {
-        hit.box = false;
-        hit.sphere = true;
-        hit.distance = t;
-    }
-    hit.point = origin + direction * hit.distance;
-    return hit;
-}
+const int BOX = 0;
 
 float luminance(const osg::Vec4ub& c)
 {
@@ -104,6 +63,7 @@ protected:
     }
 
     Frame frame;
+    AnalyticScene truth = createAnalyticScene();
 };
 
 } // namespace
@@ -112,8 +72,7 @@ TEST_F(FixedFunctionScene, CoverageMatchesRayCastScene)
 {
     // Pixel centres within a fraction of a pixel of a silhouette may fall either way.
     EXPECT_TRUE(coverageMatches(
-        frame, [&](int x, int y) { return castRay(frame, x, y).distance < 1e30; }, 12,
-        "fixed_function_scene"));
+        frame, [&](int x, int y) { return truth.castPixel(frame, x, y).hit(); }, 12, "fixed_function_scene"));
 }
 
 TEST_F(FixedFunctionScene, DepthMatchesRayCastScene)
@@ -123,14 +82,14 @@ TEST_F(FixedFunctionScene, DepthMatchesRayCastScene)
     {
         for (int x = 0; x < frame.width(); ++x)
         {
-            const Hit hit = castRay(frame, x, y);
-            if (!(hit.box || hit.sphere) || !frame.isCovered(x, y))
+            const RayHit hit = truth.castPixel(frame, x, y);
+            if (!hit.hit() || !frame.isCovered(x, y))
                 continue;
             const double expected = frame.windowDepth(hit.point);
             const double error = std::fabs(frame.depthAt(x, y) - expected);
             // Planar faces are exact up to 24-bit depth quantisation; the tessellated sphere
             // deviates from the true sphere by its chord error (about 1e-3 of the radius here).
-            if (hit.box)
+            if (hit.label == BOX)
             {
                 ++boxPixels;
                 boxWrong += error > 2e-6 ? 1 : 0;

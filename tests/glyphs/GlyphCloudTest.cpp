@@ -1,0 +1,316 @@
+// GlyphCloud's data path: colour modes and colour maps, attribute updates, bounds and culling,
+// GPU footprint, invalid input, shader overrides, and a lit regression baseline.
+
+#include "GlyphTestScenes.h"
+
+#include <osgGlyphs/GlyphCloud>
+
+#include <osg/ShapeDrawable>
+#include <osgDB/FileUtils>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+using namespace osgGlyphsTest;
+using osgGlyphs::ColorMap;
+using osgGlyphs::GlyphCloud;
+
+namespace
+{
+
+osg::Vec4ub toBytes(const osg::Vec4& color)
+{
+    osg::Vec4ub bytes;
+    for (int c = 0; c < 4; ++c)
+        bytes[c] = static_cast<unsigned char>(std::lround(std::clamp(color[c], 0.0f, 1.0f) * 255.0f));
+    return bytes;
+}
+
+/** Three unlit spheres in a row, coloured by scalars. */
+osg::ref_ptr<GlyphCloud> createScalarRow(const std::vector<float>& values)
+{
+    osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
+    for (size_t i = 0; i < values.size(); ++i)
+        positions->push_back(osg::Vec3(-2.5f + 2.5f * i, 0.0f, 0.0f));
+    osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+    cloud->setPositions(positions.get());
+    cloud->setRadius(0.8f);
+    cloud->setScalars(new osg::FloatArray(values.begin(), values.end()));
+    cloud->setLit(false);
+    return cloud;
+}
+
+/** The colour at the projected centre of each glyph of a cloud. */
+std::vector<osg::Vec4ub> centreColours(const Frame& frame, const GlyphCloud& cloud)
+{
+    std::vector<osg::Vec4ub> colours;
+    for (const osg::Vec3& p : *cloud.getPositions())
+    {
+        const osg::Vec3d window = frame.project(p);
+        colours.push_back(frame.colorAt(int(window.x()), int(window.y())));
+    }
+    return colours;
+}
+
+class GlyphCloudData : public ::testing::Test
+{
+protected:
+    Renderer renderer{160, 120};
+};
+
+}
+
+TEST_F(GlyphCloudData, ScalarsFollowTheColorMapAndItsRange)
+{
+    osg::ref_ptr<GlyphCloud> cloud = createScalarRow({10.0f, 15.0f, 20.0f});
+    const ColorMap* viridis = ColorMap::getBuiltin("viridis");
+    ASSERT_NE(viridis, nullptr);
+    osg::ref_ptr<osg::Node> scene = group({cloud.get()});
+
+    std::vector<osg::Vec4ub> colours = centreColours(renderer.render(scene.get()), *cloud);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_TRUE(colorNear(renderer.render(scene.get()), 0, 0, osg::Vec4ub(0, 0, 0, 255), 0));
+    EXPECT_TRUE(labelOfColor(colours[0], {toBytes(viridis->getColor(0.0f))}, 2) == 0);
+    EXPECT_TRUE(labelOfColor(colours[1], {toBytes(viridis->getColor(0.5f))}, 2) == 0);
+    EXPECT_TRUE(labelOfColor(colours[2], {toBytes(viridis->getColor(1.0f))}, 2) == 0);
+
+    cloud->setScalarRange(15.0f, 25.0f);
+    colours = centreColours(renderer.render(scene.get()), *cloud);
+    EXPECT_TRUE(labelOfColor(colours[0], {toBytes(viridis->getColor(0.0f))}, 2) == 0) << "clamped below";
+    EXPECT_TRUE(labelOfColor(colours[1], {toBytes(viridis->getColor(0.0f))}, 2) == 0);
+    EXPECT_TRUE(labelOfColor(colours[2], {toBytes(viridis->getColor(0.5f))}, 2) == 0);
+
+    osg::ref_ptr<ColorMap> custom =
+        new ColorMap("red-blue", {osg::Vec4(1.0f, 0.0f, 0.0f, 1.0f), osg::Vec4(0.0f, 0.0f, 1.0f, 1.0f)});
+    cloud->setColorMap(custom.get());
+    cloud->resetScalarRange();
+    colours = centreColours(renderer.render(scene.get()), *cloud);
+    EXPECT_TRUE(labelOfColor(colours[0], {osg::Vec4ub(255, 0, 0, 255)}, 2) == 0);
+    EXPECT_TRUE(labelOfColor(colours[1], {osg::Vec4ub(128, 0, 128, 255)}, 2) == 0);
+    EXPECT_TRUE(labelOfColor(colours[2], {osg::Vec4ub(0, 0, 255, 255)}, 2) == 0);
+}
+
+TEST_F(GlyphCloudData, BuiltinColorMapsParseAndDiffer)
+{
+    const std::vector<std::string> names = ColorMap::getBuiltinNames();
+    EXPECT_GE(names.size(), 4u);
+    for (const std::string& name : names)
+    {
+        const ColorMap* map = ColorMap::getBuiltin(name);
+        ASSERT_NE(map, nullptr) << name;
+        EXPECT_GE(map->getColors().size(), 2u) << name;
+    }
+    // The diverging map is symmetric around a light centre.
+    const ColorMap* coolwarm = ColorMap::getBuiltin("coolwarm");
+    const osg::Vec4 centre = coolwarm->getColor(0.5f);
+    EXPECT_GT(centre.r() + centre.g() + centre.b(), 2.4f);
+    EXPECT_EQ(ColorMap::getBuiltin("no-such-map"), nullptr);
+
+    std::string error;
+    EXPECT_FALSE(ColorMap::parse("bad", "#ff0000\nnot-a-colour\n", error).valid());
+    EXPECT_NE(error.find("bad:2"), std::string::npos) << error;
+}
+
+TEST_F(GlyphCloudData, UpdatesRepackAndReuploadOnlyWhatChanged)
+{
+    osg::ref_ptr<GlyphCloud> cloud = createScalarRow({0.0f, 1.0f, 2.0f});
+    osg::ref_ptr<osg::Node> scene = group({cloud.get()});
+    const ColorMap* viridis = ColorMap::getBuiltin("viridis");
+    renderer.render(scene.get());
+
+    const osg::Array* packed = cloud->getVertexAttribArray(osgGlyphs::GlyphStateSets::PACKED_ATTRIBUTE);
+    const unsigned int packedCount = packed->getModifiedCount();
+    const unsigned int positionCount = cloud->getPositions()->getModifiedCount();
+
+    // New scalars: the packed attribute is re-uploaded, the positions are not.
+    (*cloud->getScalars())[0] = 2.0f;
+    (*cloud->getScalars())[2] = 0.0f;
+    cloud->getScalars()->dirty();
+    cloud->dirtyGlyphs();
+    EXPECT_GT(packed->getModifiedCount(), packedCount);
+    EXPECT_EQ(cloud->getPositions()->getModifiedCount(), positionCount);
+    std::vector<osg::Vec4ub> colours = centreColours(renderer.render(scene.get()), *cloud);
+    EXPECT_TRUE(labelOfColor(colours[0], {toBytes(viridis->getColor(1.0f))}, 2) == 0);
+    EXPECT_TRUE(labelOfColor(colours[2], {toBytes(viridis->getColor(0.0f))}, 2) == 0);
+
+    // Moved glyphs: the positions are re-uploaded, the unchanged packed attribute is not.
+    const unsigned int packedAfterScalars = packed->getModifiedCount();
+    (*cloud->getPositions())[1].z() = 1.5f;
+    cloud->getPositions()->dirty();
+    cloud->dirtyGlyphs();
+    EXPECT_EQ(packed->getModifiedCount(), packedAfterScalars);
+    const Frame moved = renderer.render(scene.get());
+    const osg::Vec3d top = moved.project(osg::Vec3(0.0f, 0.0f, 1.5f));
+    EXPECT_TRUE(moved.isCovered(int(top.x()), int(top.y())));
+    const osg::Vec3d old = moved.project(osg::Vec3(0.0f, 0.0f, -0.6f));
+    EXPECT_FALSE(moved.isCovered(int(old.x()), int(old.y())));
+    EXPECT_GE(cloud->getBound().radius(), 0.0f);
+    EXPECT_NEAR(cloud->getBoundingBox().zMax(), 1.5f + 0.8f, 1e-3f);
+}
+
+TEST_F(GlyphCloudData, GPUFootprintPerGlyph)
+{
+    osg::ref_ptr<GlyphCloud> cloud = createScalarRow({0.0f, 1.0f, 2.0f, 3.0f});
+    cloud->setRadii(makeArray<osg::FloatArray>({0.5f, 0.6f, 0.7f, 0.8f}));
+    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 16.0) << "position + radius + scalar";
+    cloud->setColors(makeArray<osg::Vec4ubArray>({osg::Vec4ub(1, 2, 3, 4), osg::Vec4ub(1, 2, 3, 4),
+                                                  osg::Vec4ub(1, 2, 3, 4), osg::Vec4ub(1, 2, 3, 4)}));
+    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 20.0) << "position + radius + RGBA8";
+}
+
+TEST_F(GlyphCloudData, RadiiKeepTheirPrecisionAtAnyScale)
+{
+    // Radii are packed as half floats relative to the largest one.
+    for (float scale : {1e-6f, 1.0f, 1e6f})
+    {
+        osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+        cloud->setPositions(makeArray<osg::Vec3Array>({osg::Vec3(), osg::Vec3(10.0f * scale, 0.0f, 0.0f)}));
+        cloud->setRadii(makeArray<osg::FloatArray>({0.3f * scale, 1.7f * scale}));
+        const osg::BoundingBox box = cloud->getBoundingBox();
+        EXPECT_NEAR(box.xMin(), -0.3f * scale, 0.3f * scale * 1e-3f);
+        EXPECT_NEAR(box.xMax(), 11.7f * scale, 1.7f * scale * 1e-3f);
+    }
+}
+
+TEST_F(GlyphCloudData, GlyphsReachingIntoTheViewAreNotCulled)
+{
+    // The centre lies outside the view frustum; only the radius brings the sphere into view.
+    const std::vector<SphereSpec> spheres = {
+        {osg::Vec3(5.2f, 0.0f, 0.0f), 1.5f, osg::Vec4ub(255, 0, 0, 255)}};
+    AnalyticScene truth;
+    addSpheres(truth, spheres);
+    const Frame frame = renderer.render(group({createSphereCloud(spheres).get()}).get());
+    EXPECT_GT(frame.project(spheres[0].center).x(), frame.width()) << "the centre must be off screen";
+    EXPECT_TRUE(coverageMatches(
+        frame, [&](int x, int y) { return truth.castPixel(frame, x, y).hit(); }, 4, "cull_edge"));
+    int covered = 0;
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x)
+            covered += frame.isCovered(x, y) ? 1 : 0;
+    EXPECT_GT(covered, 200);
+}
+
+TEST_F(GlyphCloudData, AutomaticNearFarKeepsWholeSpheres)
+{
+    // OSG computes near and far from the bounding volumes: they must include the radii.
+    renderer.getViewer()->getCamera()->setComputeNearFarMode(
+        osg::CullSettings::COMPUTE_NEAR_FAR_USING_BOUNDING_VOLUMES);
+    // Radii whose ratio a half float holds exactly, so that the depths are exact too.
+    const std::vector<SphereSpec> spheres = {
+        {osg::Vec3(0.0f, -3.0f, 0.0f), 1.875f, osg::Vec4ub(255, 0, 0, 255)},
+        {osg::Vec3(0.5f, 6.0f, 0.5f), 2.5f, osg::Vec4ub(0, 255, 0, 255)}};
+    AnalyticScene truth;
+    addSpheres(truth, spheres);
+    const Frame frame = renderer.render(group({createSphereCloud(spheres).get()}).get());
+    int wrong = 0, checked = 0;
+    for (int y = 0; y < frame.height(); ++y)
+    {
+        for (int x = 0; x < frame.width(); ++x)
+        {
+            const int label = truth.certainLabel(frame, x, y);
+            if (label < 0)
+                continue;
+            ++checked;
+            const double expected = frame.windowDepth(truth.castPixel(frame, x, y).point);
+            const bool bad = !frame.isCovered(x, y) || std::fabs(frame.depthAt(x, y) - expected) > 1e-5;
+            wrong += bad ? 1 : 0;
+        }
+    }
+    EXPECT_GT(checked, 5000);
+    EXPECT_EQ(wrong, 0);
+}
+
+TEST_F(GlyphCloudData, InvalidGlyphsAreSkippedWithAWarning)
+{
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    osg::ref_ptr<osg::Vec3Array> positions = makeArray<osg::Vec3Array>(
+        {osg::Vec3(-2.0f, 0.0f, 0.0f), osg::Vec3(nan, 0.0f, 0.0f), osg::Vec3(0.0f, inf, 0.0f),
+         osg::Vec3(2.0f, 0.0f, 0.0f), osg::Vec3(0.0f, 0.0f, 2.0f), osg::Vec3(0.0f, 0.0f, -2.0f),
+         osg::Vec3(1.0f, 1.0f, 1.0f)});
+    osg::ref_ptr<osg::FloatArray> radii =
+        makeArray<osg::FloatArray>({0.5f, 0.5f, 0.5f, 0.0f, -1.0f, 0.5f, nan});
+    osg::ref_ptr<osg::FloatArray> scalars =
+        makeArray<osg::FloatArray>({1.0f, 2.0f, 3.0f, 4.0f, 5.0f, inf}); // one short
+
+    osg::ref_ptr<NotifyCapture> capture = new NotifyCapture;
+    osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+    cloud->setName("bad");
+    cloud->setPositions(positions.get());
+    cloud->setRadii(radii.get());
+    cloud->setScalars(scalars.get());
+    const std::string warnings = capture->stop();
+
+    EXPECT_NE(warnings.find("the scalar array has 6 values for 7 positions"), std::string::npos) << warnings;
+    EXPECT_NE(warnings.find("2 of 6 glyphs have a non-finite position"), std::string::npos) << warnings;
+    EXPECT_NE(warnings.find("2 of 6 glyphs have a radius that is not finite and > 0"), std::string::npos)
+        << warnings;
+    EXPECT_NE(warnings.find("1 of 6 glyphs have a non-finite scalar"), std::string::npos) << warnings;
+    EXPECT_EQ(cloud->getNumGlyphs(), 6u);
+    EXPECT_EQ(cloud->getNumSkippedGlyphs(), 5u);
+
+    // Only the valid glyph at (-2, 0, 0) is drawn, and the bounds ignore the rest.
+    const osg::BoundingBox box = cloud->getBoundingBox();
+    EXPECT_FLOAT_EQ(box.xMin(), -2.5f);
+    EXPECT_FLOAT_EQ(box.xMax(), -1.5f);
+    AnalyticScene truth;
+    truth.addSphere(osg::Vec3d(-2.0, 0.0, 0.0), 0.5);
+    cloud->setLit(false);
+    const Frame frame = renderer.render(group({cloud.get()}).get());
+    EXPECT_TRUE(coverageMatches(
+        frame, [&](int x, int y) { return truth.castPixel(frame, x, y).hit(); }, 4, "invalid_glyphs"));
+}
+
+TEST_F(GlyphCloudData, AShaderFileOnTheDataPathOverridesTheEmbeddedCopy)
+{
+    const std::string directory = outputPath("shader-override");
+    osgDB::makeDirectory(directory + "/osgGlyphs");
+    {
+        std::ofstream file(directory + "/osgGlyphs/lighting.glsl");
+        file << "uniform vec3 osgGlyphs_material;\n"
+                "vec3 shade(vec3 base, vec3 position, vec3 normal, vec3 toEye) { return vec3(1.0, 0.0, 1.0); "
+                "}\n";
+    }
+    osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{osg::Vec3(), 1.0f, osg::Vec4ub(0, 255, 0, 255)}});
+    osg::ref_ptr<osg::Node> scene = group({cloud.get()});
+    const osg::Vec4ub magenta(255, 0, 255, 255);
+
+    osgDB::getDataFilePathList().push_front(directory);
+    osgGlyphs::GlyphStateSets::instance()->reloadShaders();
+    const Frame overridden = renderer.render(scene.get());
+    osgDB::getDataFilePathList().pop_front();
+    osgGlyphs::GlyphStateSets::instance()->reloadShaders();
+    const Frame restored = renderer.render(scene.get());
+
+    EXPECT_TRUE(colorNear(overridden, 80, 60, magenta, 0));
+    EXPECT_TRUE(colorNear(restored, 80, 60, osg::Vec4ub(0, 255, 0, 255), 0));
+}
+
+TEST_F(GlyphCloudData, LitSceneMatchesBaseline)
+{
+    renderer.setLookAt(osg::Vec3d(2.0, -6.0, 4.5), osg::Vec3d(), osg::Vec3d(0.0, 0.0, 1.0));
+    osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
+    osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray;
+    osg::ref_ptr<osg::FloatArray> radii = new osg::FloatArray;
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j)
+        {
+            positions->push_back(osg::Vec3(-2.0f + i, -2.0f + j, 0.3f * std::sin(float(i * j))));
+            scalars->push_back(float(i + j));
+            radii->push_back(0.3f + 0.04f * float((i * 7 + j * 3) % 5));
+        }
+    osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+    cloud->setPositions(positions.get());
+    cloud->setRadii(radii.get());
+    cloud->setScalars(scalars.get());
+    osg::ref_ptr<osg::ShapeDrawable> slab =
+        new osg::ShapeDrawable(new osg::Box(osg::Vec3(), 5.0f, 5.0f, 0.2f));
+    const Frame frame = renderer.render(group({cloud.get(), slab.get()}).get());
+    Tolerance tolerance;
+    tolerance.colorChannel = 3;
+    tolerance.colorPixelBudget = 8;
+    tolerance.depth = 1e-6f;
+    tolerance.depthPixelBudget = 8;
+    EXPECT_TRUE(matchesBaseline(frame, "glyphs_lit_scene", tolerance));
+}

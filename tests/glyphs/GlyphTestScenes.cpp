@@ -1,0 +1,86 @@
+#include "GlyphTestScenes.h"
+
+#include <osg/Geometry>
+
+#include <cstdlib>
+
+namespace osgGlyphsTest
+{
+
+osg::ref_ptr<osgGlyphs::GlyphCloud> createSphereCloud(const std::vector<SphereSpec>& spheres, bool lit)
+{
+    osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
+    osg::ref_ptr<osg::FloatArray> radii = new osg::FloatArray;
+    osg::ref_ptr<osg::Vec4ubArray> colors = new osg::Vec4ubArray;
+    for (const SphereSpec& sphere : spheres)
+    {
+        positions->push_back(sphere.center);
+        radii->push_back(sphere.radius);
+        colors->push_back(sphere.color);
+    }
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = new osgGlyphs::GlyphCloud;
+    cloud->setPositions(positions.get());
+    cloud->setRadii(radii.get());
+    cloud->setColors(colors.get());
+    cloud->setLit(lit);
+    return cloud;
+}
+
+void addSpheres(AnalyticScene& scene, const std::vector<SphereSpec>& spheres)
+{
+    for (const SphereSpec& sphere : spheres)
+        scene.addSphere(sphere.center, sphere.radius);
+}
+
+osg::ref_ptr<osg::Geometry> createFlatQuad(const osg::Vec3& center, const osg::Vec3& u, const osg::Vec3& v,
+                                           const osg::Vec4& color)
+{
+    osg::ref_ptr<osg::Geometry> quad = osg::createTexturedQuadGeometry(center - u - v, u * 2.0f, v * 2.0f);
+    osg::ref_ptr<osg::Vec4Array> colors = new osg::Vec4Array(1, &color);
+    quad->setColorArray(colors.get(), osg::Array::BIND_OVERALL);
+    quad->getOrCreateStateSet()->setMode(GL_LIGHTING, osg::StateAttribute::OFF);
+    return quad;
+}
+
+osg::ref_ptr<osg::Geode> group(std::initializer_list<osg::Drawable*> drawables)
+{
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    for (osg::Drawable* drawable : drawables)
+        geode->addDrawable(drawable);
+    return geode;
+}
+
+int labelOfColor(const osg::Vec4ub& color, const std::vector<osg::Vec4ub>& palette, int tolerance)
+{
+    for (size_t i = 0; i < palette.size(); ++i)
+    {
+        bool same = true;
+        for (int c = 0; c < 3; ++c)
+            same = same && std::abs(int(color[c]) - int(palette[i][c])) <= tolerance;
+        if (same)
+            return static_cast<int>(i);
+    }
+    return -1;
+}
+
+NotifyCapture::NotifyCapture() : _previous(osg::getNotifyHandler())
+{
+    osg::setNotifyHandler(this);
+}
+
+void NotifyCapture::notify(osg::NotifySeverity severity, const char* message)
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    if (severity <= osg::WARN)
+        _text << message;
+}
+
+std::string NotifyCapture::stop()
+{
+    osg::ref_ptr<NotifyCapture> self = this; // setNotifyHandler drops the registry's reference
+    osg::setNotifyHandler(_previous.get());
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _text.str();
+}
+
+}

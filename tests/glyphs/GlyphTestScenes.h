@@ -1,0 +1,67 @@
+// Small scenes of glyph clouds and fixed-function geometry shared by the glyph tests.
+
+#ifndef OSGGLYPHS_TESTS_GLYPHTESTSCENES_H
+#define OSGGLYPHS_TESTS_GLYPHTESTSCENES_H
+
+#include "AnalyticScene.h"
+
+#include <osgGlyphs/GlyphCloud>
+
+#include <osg/Geode>
+#include <osg/Notify>
+
+#include <mutex>
+#include <sstream>
+#include <vector>
+
+namespace osgGlyphsTest
+{
+
+/** An OSG array from a list of values (OSG's arrays have no initializer-list constructor). */
+template <class ArrayType>
+osg::ref_ptr<ArrayType> makeArray(std::initializer_list<typename ArrayType::ElementDataType> values)
+{
+    return new ArrayType(values.begin(), values.end());
+}
+
+struct SphereSpec
+{
+    osg::Vec3 center;
+    float radius;
+    osg::Vec4ub color;
+};
+
+/** A cloud of spheres with per-glyph radii and RGBA colours, unlit unless asked. */
+osg::ref_ptr<osgGlyphs::GlyphCloud> createSphereCloud(const std::vector<SphereSpec>& spheres,
+                                                      bool lit = false);
+
+/** The same spheres as analytic primitives; labels follow the spheres' order. */
+void addSpheres(AnalyticScene& scene, const std::vector<SphereSpec>& spheres);
+
+/** An unlit, flat-coloured square in the plane through center with the given normal. */
+osg::ref_ptr<osg::Geometry> createFlatQuad(const osg::Vec3& center, const osg::Vec3& u, const osg::Vec3& v,
+                                           const osg::Vec4& color);
+
+osg::ref_ptr<osg::Geode> group(std::initializer_list<osg::Drawable*> drawables);
+
+/** Which of the given unlit colours a pixel shows, -1 for none of them. */
+int labelOfColor(const osg::Vec4ub& color, const std::vector<osg::Vec4ub>& palette, int tolerance = 2);
+
+/** Collects OSG's warnings from construction until stop(). Create it with new. */
+class NotifyCapture : public osg::NotifyHandler
+{
+public:
+    NotifyCapture();
+    void notify(osg::NotifySeverity severity, const char* message) override;
+    /** Restores the previous handler and returns what was captured. */
+    std::string stop();
+
+private:
+    osg::ref_ptr<osg::NotifyHandler> _previous;
+    mutable std::mutex _mutex;
+    std::ostringstream _text;
+};
+
+}
+
+#endif

@@ -1,0 +1,67 @@
+// Analytic ground truth for regression renders: a scene of exact primitives, ray-cast
+// through the same pixels the renderer draws.
+
+#ifndef OSGGLYPHS_TESTS_ANALYTICSCENE_H
+#define OSGGLYPHS_TESTS_ANALYTICSCENE_H
+
+#include "RenderHarness.h"
+
+#include <limits>
+#include <vector>
+
+namespace osgGlyphsTest
+{
+
+/** The nearest surface a ray meets. label is the primitive's index, -1 for none. */
+struct RayHit
+{
+    int label = -1;
+    double distance = std::numeric_limits<double>::infinity();
+    osg::Vec3d point;
+    osg::Vec3d normal;
+
+    bool hit() const { return label >= 0; }
+};
+
+class AnalyticScene
+{
+public:
+    /** Each add returns the primitive's label. */
+    int addSphere(const osg::Vec3d& center, double radius);
+    int addBox(const osg::Vec3d& min, const osg::Vec3d& max);
+    /** A plane through point with the given normal; only rays hitting it within the
+     * given distance of point count (a finite square quad when used for a plane drawable). */
+    int addPlane(const osg::Vec3d& point, const osg::Vec3d& normal, double halfExtent);
+
+    /** The nearest hit at least minDistance along the ray. */
+    RayHit cast(const osg::Vec3d& origin, const osg::Vec3d& direction, double minDistance = 0.0) const;
+
+    /** The hit through window point (x + dx, y + dy), between the frame's near and far planes. */
+    RayHit castPixel(const Frame& frame, int x, int y, double dx = 0.5, double dy = 0.5) const;
+
+    /** The label at pixel (x, y) when the centre and four samples 0.3 px around it agree;
+     * AMBIGUOUS for pixels on a silhouette or an intersection curve. */
+    int certainLabel(const Frame& frame, int x, int y) const;
+    static const int AMBIGUOUS = -2;
+
+private:
+    struct Primitive
+    {
+        enum Kind
+        {
+            SPHERE,
+            BOX,
+            PLANE
+        } kind;
+        osg::Vec3d a, b; // sphere: center, (radius, 0, 0); box: min, max; plane: point, normal
+        double extent = 0.0;
+    };
+    bool intersect(const Primitive& primitive, const osg::Vec3d& origin, const osg::Vec3d& direction,
+                   double minDistance, double& distance, osg::Vec3d& normal) const;
+
+    std::vector<Primitive> _primitives;
+};
+
+}
+
+#endif
