@@ -8,6 +8,7 @@
 #include <osgGlyphs/GlyphCloud>
 
 #include <osg/Group>
+#include <osg/LightSource>
 #include <osg/ShapeDrawable>
 #include <osgDB/FileUtils>
 
@@ -309,4 +310,64 @@ TEST_F(SphereImpostor, LightingIsSwitchedPerCloudOrPerSubgraph)
     EXPECT_GT(countBase(renderer.render(root.get())), coveredPixels * 9 / 10) << "unlit cloud";
     osgGlyphs::setGlyphLighting(*root->getStateSet(), true);
     EXPECT_LT(countBase(renderer.render(root.get())), coveredPixels / 10) << "lit subgraph";
+}
+
+TEST_F(SphereImpostor, LitByAnOsgLightSource)
+{
+    // A directional light from +x, in place of the view's headlight: the +x side is brightest.
+    renderer.getViewer()->setLightingMode(osg::View::NO_LIGHT);
+    osg::ref_ptr<osg::LightSource> source = new osg::LightSource;
+    source->getLight()->setLightNum(0);
+    source->getLight()->setPosition(osg::Vec4(1.0f, 0.0f, 0.0f, 0.0f));
+    source->getLight()->setDiffuse(osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f));
+    source->getLight()->setSpecular(osg::Vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    source->getLight()->setAmbient(osg::Vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    source->addChild(
+        group({createSphereCloud({{osg::Vec3(), 2.0f, osg::Vec4ub(255, 255, 255, 255)}}, true).get()}));
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(source.get());
+    const Frame frame = renderer.render(root.get());
+
+    const osg::Vec3d right = frame.project(osg::Vec3d(1.9, -0.6, 0.0));
+    const osg::Vec3d left = frame.project(osg::Vec3d(-1.9, -0.6, 0.0));
+    const osg::Vec3d centre = frame.project(osg::Vec3d(0.0, -2.0, 0.0));
+    const int bright = frame.colorAt(int(right.x()), int(right.y())).r();
+    const int dark = frame.colorAt(int(left.x()), int(left.y())).r();
+    const int middle = frame.colorAt(int(centre.x()), int(centre.y())).r();
+    EXPECT_GT(bright, 200);
+    // Unlit sides get only the ambient term: 0.2 of the base colour.
+    EXPECT_NEAR(dark, 51, 2);
+    EXPECT_NEAR(middle, 51, 4); // the pixel centre faces the light by a degree or so
+}
+
+TEST_F(SphereImpostor, CopiesRenderLikeTheOriginal)
+{
+    osg::ref_ptr<GlyphCloud> original = createSphereCloud(
+        {{osg::Vec3(-1.0f, 0.0f, 0.0f), 1.0f, RED}, {osg::Vec3(1.2f, 0.0f, 0.5f), 0.75f, GREEN}});
+    original->setMaterial(0.3f, 0.1f, 20.0f);
+    osg::ref_ptr<GlyphCloud> deep = osg::clone(original.get(), osg::CopyOp::DEEP_COPY_ALL);
+    osg::ref_ptr<GlyphCloud> shallow = osg::clone(original.get(), osg::CopyOp::SHALLOW_COPY);
+    EXPECT_NE(deep->getPositions(), original->getPositions());
+    EXPECT_EQ(shallow->getPositions(), original->getPositions());
+    EXPECT_EQ(deep->getNumGlyphs(), 2u);
+    EXPECT_FLOAT_EQ(deep->getShininess(), 20.0f);
+
+    const Frame expected = renderer.render(group({original.get()}).get());
+    for (GlyphCloud* copy : {deep.get(), shallow.get()})
+    {
+        const Frame frame = renderer.render(group({copy}).get());
+        int differing = 0;
+        for (int y = 0; y < frame.height(); ++y)
+            for (int x = 0; x < frame.width(); ++x)
+                differing += (frame.colorAt(x, y) != expected.colorAt(x, y) ||
+                              frame.depthAt(x, y) != expected.depthAt(x, y))
+                                 ? 1
+                                 : 0;
+        EXPECT_EQ(differing, 0);
+    }
+    // A deep copy's arrays are its own: editing it leaves the original alone.
+    (*deep->getPositions())[0].x() = 3.0f;
+    deep->getPositions()->dirty();
+    deep->dirtyGlyphs();
+    EXPECT_FLOAT_EQ((*original->getPositions())[0].x(), -1.0f);
 }
