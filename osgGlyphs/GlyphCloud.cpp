@@ -36,13 +36,18 @@ GlyphCloud::GlyphCloud()
 
 GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
     : osg::Geometry(other, copyop), _colorMap(other._colorMap), _radius(other._radius), _color(other._color),
-      _colorMode(other._colorMode), _shape(other._shape), _lit(other._lit), _autoRange(other._autoRange),
+      _colorMode(other._colorMode), _shape(other._shape), _technique(other._technique),
+      _anchor(other._anchor), _lengthScale(other._lengthScale), _uniformLength(other._uniformLength),
+      _arrowParams(other._arrowParams), _lit(other._lit), _autoRange(other._autoRange),
       _rangeMin(other._rangeMin), _rangeMax(other._rangeMax), _material(other._material)
 {
     // osg::Geometry copied (or shared) the arrays it draws; pick them up again by their role.
     _positions = dynamic_cast<osg::Vec3Array*>(getVertexArray());
     _packed = dynamic_cast<osg::UIntArray*>(getVertexAttribArray(GlyphStateSets::PACKED_ATTRIBUTE));
     _colors = dynamic_cast<osg::Vec4ubArray*>(getVertexAttribArray(GlyphStateSets::COLOR_ATTRIBUTE));
+    _vectors = dynamic_cast<osg::Vec3Array*>(getVertexAttribArray(GlyphStateSets::VECTOR_ATTRIBUTE));
+    if (!_vectors && other._vectors.valid())
+        _vectors = osg::clone(other._vectors.get(), copyop); // held but not drawn by a sphere cloud
     _radii = other._radii.valid() ? osg::clone(other._radii.get(), copyop) : nullptr;
     _scalars = other._scalars.valid() ? osg::clone(other._scalars.get(), copyop) : nullptr;
     _drawArrays = getNumPrimitiveSets() ? dynamic_cast<osg::DrawArrays*>(getPrimitiveSet(0)) : nullptr;
@@ -71,6 +76,9 @@ void GlyphCloud::initialize()
     _baseColorUniform = new osg::Uniform("osgGlyphs_baseColor", _color);
     _scalarToColormapUniform = new osg::Uniform("osgGlyphs_scalarToColormap", osg::Vec2(0.0f, 0.0f));
     _materialUniform = new osg::Uniform("osgGlyphs_material", _material);
+    _vectorParamsUniform = new osg::Uniform("osgGlyphs_vectorParams", osg::Vec3());
+    _arrowParamsUniform = new osg::Uniform("osgGlyphs_arrowParams", _arrowParams);
+    updateVectorUniforms();
     if (!_colorMap)
         _colorMap = ColorMap::getBuiltin("viridis");
     updatePackedAttributes();
@@ -137,6 +145,64 @@ void GlyphCloud::setScalars(osg::FloatArray* scalars)
     updateStateSet();
 }
 
+void GlyphCloud::setShape(GlyphShape shape)
+{
+    _shape = shape;
+    setVertexAttribArray(GlyphStateSets::VECTOR_ATTRIBUTE, hasVectorShape() ? _vectors.get() : nullptr);
+    dirtyGlyphs();
+    updateStateSet();
+}
+
+void GlyphCloud::setTechnique(GlyphTechnique technique)
+{
+    _technique = technique;
+    updateStateSet();
+}
+
+void GlyphCloud::setVectors(osg::Vec3Array* vectors)
+{
+    _vectors = vectors;
+    if (vectors)
+        vectors->setBinding(osg::Array::BIND_PER_VERTEX);
+    // Only vector shapes upload the vectors.
+    setVertexAttribArray(GlyphStateSets::VECTOR_ATTRIBUTE, hasVectorShape() ? vectors : nullptr);
+    dirtyGlyphs();
+}
+
+void GlyphCloud::setLengthScale(float lengthScale)
+{
+    _lengthScale = lengthScale;
+    updateVectorUniforms();
+    dirtyBound();
+}
+
+void GlyphCloud::setUniformLength(bool uniformLength)
+{
+    _uniformLength = uniformLength;
+    updateVectorUniforms();
+    dirtyBound();
+}
+
+void GlyphCloud::setAnchor(GlyphAnchor anchor)
+{
+    _anchor = anchor;
+    updateVectorUniforms();
+    dirtyBound();
+}
+
+void GlyphCloud::setArrowHead(float lengthRatio, float radiusRatio)
+{
+    _arrowParams.set(lengthRatio, radiusRatio);
+    _arrowParamsUniform->set(_arrowParams);
+    dirtyBound();
+}
+
+void GlyphCloud::updateVectorUniforms()
+{
+    const float anchor = _anchor == GlyphAnchor::Tail ? 0.0f : _anchor == GlyphAnchor::Head ? 1.0f : 0.5f;
+    _vectorParamsUniform->set(osg::Vec3(_lengthScale, _uniformLength ? 1.0f : 0.0f, anchor));
+}
+
 void GlyphCloud::setColorMap(ColorMap* colorMap)
 {
     _colorMap = colorMap ? colorMap : ColorMap::getBuiltin("viridis");
@@ -195,6 +261,14 @@ void GlyphCloud::updatePackedAttributes()
     limit(_radii.get(), "radius");
     limit(_colors.get(), "colour");
     limit(_scalars.get(), "scalar");
+    if (hasVectorShape())
+    {
+        if (!_vectors.valid() && numPositions)
+            OSG_INFO << "osgGlyphs::GlyphCloud \"" << getName()
+                     << "\": vector glyphs without vectors; nothing is drawn" << std::endl;
+        count = _vectors.valid() ? count : 0;
+        limit(_vectors.get(), "vector");
+    }
 
     // The range the scalars are quantised over: their finite minimum and maximum.
     _dataMin = std::numeric_limits<float>::max();
@@ -227,7 +301,7 @@ void GlyphCloud::updatePackedAttributes()
     }
     const bool radiusValid = std::isfinite(_radiusScale) && _radiusScale > 0.0f;
 
-    unsigned int badPositions = 0, badRadii = 0, badScalars = 0;
+    unsigned int badPositions = 0, badRadii = 0, badScalars = 0, badVectors = 0, zeroVectors = 0;
     const double quantisationScale =
         _dataMax > _dataMin ? 65535.0 / (double(_dataMax) - double(_dataMin)) : 0.0;
     std::vector<uint32_t> packed(count);
@@ -258,6 +332,20 @@ void GlyphCloud::updatePackedAttributes()
             ++badPositions;
             halfRadius = 0;
         }
+        if (hasVectorShape())
+        {
+            const osg::Vec3& v = (*_vectors)[i];
+            if (!isFinite(v))
+            {
+                ++badVectors;
+                halfRadius = 0;
+            }
+            else if (v.length2() == 0.0f)
+            {
+                ++zeroVectors; // no direction: not drawn, and not an error
+                halfRadius = 0;
+            }
+        }
         packed[i] = pack(radiusValid ? halfRadius : 0, quantised);
     }
     _numSkipped = 0;
@@ -281,6 +369,10 @@ void GlyphCloud::updatePackedAttributes()
     report(radiusValid ? badRadii : static_cast<unsigned int>(count),
            "have a radius that is not finite and > 0");
     report(badScalars, "have a non-finite scalar (NaN or inf)");
+    report(badVectors, "have a non-finite vector (NaN or inf)");
+    if (zeroVectors)
+        OSG_INFO << "osgGlyphs::GlyphCloud \"" << getName() << "\": " << zeroVectors << " of " << count
+                 << " glyphs have a zero vector and no direction; they are not drawn" << std::endl;
 
     _drawArrays->setCount(static_cast<GLsizei>(count));
     _radiusScaleUniform->set(_radiusScale);
@@ -308,6 +400,7 @@ void GlyphCloud::updateStateSet()
 {
     GlyphVariant variant;
     variant.shape = _shape;
+    variant.technique = _technique;
     variant.colorMode = _colorMode;
     variant.lit = _lit;
     variant.colorMap = _colorMode == GlyphColorMode::Scalar ? _colorMap.get() : nullptr;
@@ -328,16 +421,34 @@ double GlyphCloud::getGPUBytesPerGlyph() const
 
 osg::BoundingBox GlyphCloud::computeBoundingBox() const
 {
+    const float anchor = _anchor == GlyphAnchor::Tail ? 0.0f : _anchor == GlyphAnchor::Head ? 1.0f : 0.5f;
+    const float widest = _shape == GlyphShape::Arrow ? std::max(_arrowParams.y(), 1.0f) : 1.0f;
     osg::BoundingBox box;
     for (unsigned int i = 0; i < _numGlyphs; ++i)
     {
         const uint16_t halfRadius = static_cast<uint16_t>((*_packed)[i] & 0xffffu);
         if (halfRadius == 0)
             continue;
-        const float radius = detail::fromHalf(halfRadius) * _radiusScale;
+        const float radius = detail::fromHalf(halfRadius) * _radiusScale * widest;
+        const osg::Vec3 pad(radius, radius, radius);
         const osg::Vec3& p = (*_positions)[i];
-        box.expandBy(p - osg::Vec3(radius, radius, radius));
-        box.expandBy(p + osg::Vec3(radius, radius, radius));
+        if (!hasVectorShape())
+        {
+            box.expandBy(p - pad);
+            box.expandBy(p + pad);
+            continue;
+        }
+        // The glyph lies within its radius of the segment from tail to head.
+        const osg::Vec3& v = (*_vectors)[i];
+        const float magnitude = v.length();
+        const osg::Vec3 axis = v / magnitude;
+        const float length = _uniformLength ? _lengthScale : _lengthScale * magnitude;
+        const osg::Vec3 tail = p - axis * (length * anchor);
+        for (const osg::Vec3& end : {tail, tail + axis * length})
+        {
+            box.expandBy(end - pad);
+            box.expandBy(end + pad);
+        }
     }
     return box;
 }
@@ -352,6 +463,8 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
         program->apply(*_baseColorUniform);
         program->apply(*_scalarToColormapUniform);
         program->apply(*_materialUniform);
+        program->apply(*_vectorParamsUniform);
+        program->apply(*_arrowParamsUniform);
     }
     osg::Geometry::drawImplementation(renderInfo);
 }

@@ -13,6 +13,23 @@ namespace
 
 const char* const COLOR_SCALAR_DEFINE = "OSGGLYPHS_COLOR_SCALAR";
 const char* const COLOR_RGBA_DEFINE = "OSGGLYPHS_COLOR_RGBA";
+const char* const PAPER_DEFINE = "OSGGLYPHS_PAPER";
+
+/** The define that selects a shape's code, or nullptr for spheres. */
+const char* shapeDefine(GlyphShape shape)
+{
+    switch (shape)
+    {
+    case GlyphShape::Cone:
+        return "OSGGLYPHS_SHAPE_CONE";
+    case GlyphShape::Arrow:
+        return "OSGGLYPHS_SHAPE_ARROW";
+    case GlyphShape::Cylinder:
+        return "OSGGLYPHS_SHAPE_CYLINDER";
+    default:
+        return nullptr;
+    }
+}
 
 struct ShaderStage
 {
@@ -64,40 +81,43 @@ GlyphStateSets* GlyphStateSets::instance()
     return s_instance.get();
 }
 
-osg::ref_ptr<osg::Program> GlyphStateSets::createProgram(GlyphShape) const
+osg::Program* GlyphStateSets::getProgramLocked()
 {
-    osg::ref_ptr<osg::Program> program = new osg::Program;
-    program->setName("osgGlyphs");
+    if (_program)
+        return _program.get();
+    _program = new osg::Program;
+    _program->setName("osgGlyphs");
     for (const ShaderStage& stage : GLYPH_STAGES)
     {
         osg::ref_ptr<osg::Shader> shader = new osg::Shader(stage.type, detail::loadShaderSource(stage.file));
         shader->setName(stage.file);
-        program->addShader(shader.get());
+        _program->addShader(shader.get());
     }
-    program->addBindAttribLocation("osgGlyphs_packed", PACKED_ATTRIBUTE);
-    program->addBindAttribLocation("osgGlyphs_color", COLOR_ATTRIBUTE);
-    return program;
+    _program->addBindAttribLocation("osgGlyphs_packed", PACKED_ATTRIBUTE);
+    _program->addBindAttribLocation("osgGlyphs_color", COLOR_ATTRIBUTE);
+    _program->addBindAttribLocation("osgGlyphs_vector", VECTOR_ATTRIBUTE);
+    return _program.get();
 }
 
-osg::Program* GlyphStateSets::getProgram(GlyphShape shape)
+osg::Program* GlyphStateSets::getProgram()
 {
     std::lock_guard<std::mutex> lock(_mutex);
-    osg::ref_ptr<osg::Program>& program = _programs[shape];
-    if (!program)
-        program = createProgram(shape);
-    return program.get();
+    return getProgramLocked();
 }
 
 osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
 {
-    osg::Program* program = getProgram(variant.shape);
     std::lock_guard<std::mutex> lock(_mutex);
     osg::ref_ptr<osg::StateSet>& stateSet = _stateSets[variant];
     if (stateSet)
         return stateSet.get();
 
     stateSet = new osg::StateSet;
-    stateSet->setAttributeAndModes(program);
+    stateSet->setAttributeAndModes(getProgramLocked());
+    if (const char* define = shapeDefine(variant.shape))
+        stateSet->setDefine(define);
+    if (variant.technique == GlyphTechnique::Paper && variant.shape == GlyphShape::Cone)
+        stateSet->setDefine(PAPER_DEFINE);
     if (variant.lit)
         stateSet->setDefine(GLYPH_LIT_DEFINE);
     if (variant.colorMode == GlyphColorMode::RGBA)
@@ -115,14 +135,11 @@ osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
 void GlyphStateSets::reloadShaders()
 {
     std::lock_guard<std::mutex> lock(_mutex);
-    for (auto& entry : _programs)
+    for (unsigned int i = 0; _program && i < _program->getNumShaders(); ++i)
     {
-        for (unsigned int i = 0; i < entry.second->getNumShaders(); ++i)
-        {
-            osg::Shader* shader = entry.second->getShader(i);
-            shader->setShaderSource(detail::loadShaderSource(shader->getName()));
-            shader->dirtyShader();
-        }
+        osg::Shader* shader = _program->getShader(i);
+        shader->setShaderSource(detail::loadShaderSource(shader->getName()));
+        shader->dirtyShader();
     }
 }
 
@@ -134,8 +151,8 @@ void GlyphStateSets::observeContext(unsigned int contextID)
 void GlyphStateSets::releaseGLObjects(osg::State* state) const
 {
     std::lock_guard<std::mutex> lock(_mutex);
-    for (const auto& entry : _programs)
-        entry.second->releaseGLObjects(state);
+    if (_program)
+        _program->releaseGLObjects(state);
     for (const auto& entry : _stateSets)
         entry.second->releaseGLObjects(state);
 }

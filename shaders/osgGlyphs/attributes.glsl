@@ -4,10 +4,14 @@
 //   bits  0..15  radius / osgGlyphs_radiusScale as an IEEE half float (0: skip the glyph)
 //   bits 16..31  scalar, quantised to 0..65535 over the data's own range
 // osgGlyphs_color: RGBA8 per glyph (OSGGLYPHS_COLOR_RGBA only).
+// osgGlyphs_vector: direction and magnitude per glyph (vector shapes only).
 
 in uint osgGlyphs_packed;
 #ifdef OSGGLYPHS_COLOR_RGBA
 in vec4 osgGlyphs_color;
+#endif
+#ifdef OSGGLYPHS_VECTOR_SHAPE
+in vec3 osgGlyphs_vector;
 #endif
 
 uniform float osgGlyphs_radiusScale;

@@ -2,33 +2,84 @@
 // osgGlyphs: ray-casts the glyph's exact surface, lights it and writes its true depth, so that
 // glyphs intersect each other and ordinary geometry as if they were tessellated exactly.
 
+#include "shapes.glsl"
 #include "projection.glsl"
 #include "sphere.glsl"
+#include "vector.glsl"
+#include "paper.glsl"
 #include "lighting.glsl"
 
 flat in vec4 fragSphere;
+flat in vec4 fragAxis;
 flat in vec4 fragColor;
 noperspective in vec3 fragRayNear;
 noperspective in vec3 fragRayFar;
+#ifdef OSGGLYPHS_PAPER
+in vec2 fragBillboard;
+flat in vec4 fragBillboardFrame;
+#endif
 
 out vec4 color;
 
-void main()
+#ifndef OSGGLYPHS_PAPER
+/** The nearest surface point along the ray (t from the near plane) and its unit normal, or
+  * false. A glyph entered before the near plane is cut there: the cut faces the viewer. */
+bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
 {
-    vec3 origin = fragRayNear;
-    vec3 direction = normalize(fragRayFar - fragRayNear);
+#ifdef OSGGLYPHS_VECTOR_SHAPE
+    vec3 axis = fragAxis.xyz;
+    vec3 u, v;
+    axisFrame(axis, u, v);
+    vec3 relative = origin - fragSphere.xyz;
+    if (insideShape(vec3(dot(relative, u), dot(relative, v), dot(relative, axis)), fragSphere.w, fragAxis.w))
+    {
+        t = 0.0;
+        normal = -direction;
+        return true;
+    }
+    // Solve from a point just before the glyph, where the quadratics are well conditioned.
+    float reach = fragAxis.w + 2.0 * fragSphere.w * max(osgGlyphs_arrowParams.y, 1.0);
+    float start = max(dot(-relative, direction) - reach, 0.0);
+    relative += direction * start;
+    vec3 o = vec3(dot(relative, u), dot(relative, v), dot(relative, axis));
+    vec3 d = vec3(dot(direction, u), dot(direction, v), dot(direction, axis));
+    vec3 local;
+    intersectShape(o, d, fragSphere.w, fragAxis.w, t, local);
+    t += start;
+    normal = local.x * u + local.y * v + local.z * axis;
+    return t < INFINITE_DISTANCE;
+#else
     float tEnter, tLeave;
     if (!intersectSphere(origin, direction, fragSphere, tEnter, tLeave) || tLeave < 0.0)
+        return false;
+    t = max(tEnter, 0.0);
+    normal = tEnter >= 0.0 ? (origin + direction * t - fragSphere.xyz) / fragSphere.w : -direction;
+    return true;
+#endif
+}
+#endif
+
+void main()
+{
+#ifdef OSGGLYPHS_PAPER
+    vec3 local;
+    if (!paperCone(fragBillboard, fragAxis.x, fragAxis.y, local))
         discard;
-
-    // The ray starts on the near plane: a sphere entered before it is cut there, and the cut
-    // face is drawn at the near plane, facing the viewer.
-    vec3 position = origin + direction * max(tEnter, 0.0);
-    vec3 normal = tEnter >= 0.0 ? (position - fragSphere.xyz) / fragSphere.w : -direction;
-
+    // Back to eye space: x across the projected axis, y along it, z towards the viewer.
+    vec3 normal = normalize(vec3(local.x * fragBillboardFrame.xy + local.y * fragBillboardFrame.zw, local.z));
+    color = vec4(shade(fragColor.rgb, vec3(0.0), normal, vec3(0.0, 0.0, 1.0)), fragColor.a);
+#else
+    vec3 origin = fragRayNear;
+    vec3 direction = normalize(fragRayFar - fragRayNear);
+    float t;
+    vec3 normal;
+    if (!castRay(origin, direction, t, normal))
+        discard;
+    vec3 position = origin + direction * t;
     float ndcZ = ndcDepth(position);
     if (ndcZ > 1.0)
         discard; // beyond the far plane, where fixed-function geometry is clipped too
     gl_FragDepth = windowDepth(ndcZ);
     color = vec4(shade(fragColor.rgb, position, normal, -direction), fragColor.a);
+#endif
 }

@@ -6,24 +6,129 @@
 namespace osgGlyphsTest
 {
 
+int AnalyticScene::add(const Primitive& primitive)
+{
+    _primitives.push_back(primitive);
+    if (_primitives.back().label < 0)
+        _primitives.back().label = _numLabels++;
+    return _primitives.back().label;
+}
+
 int AnalyticScene::addSphere(const osg::Vec3d& center, double radius)
 {
-    _primitives.push_back({Primitive::SPHERE, center, osg::Vec3d(radius, 0.0, 0.0)});
-    return static_cast<int>(_primitives.size()) - 1;
+    Primitive p{Primitive::SPHERE, center, osg::Vec3d(radius, 0.0, 0.0)};
+    p.label = -1;
+    return add(p);
 }
 
 int AnalyticScene::addBox(const osg::Vec3d& min, const osg::Vec3d& max)
 {
-    _primitives.push_back({Primitive::BOX, min, max});
-    return static_cast<int>(_primitives.size()) - 1;
+    Primitive p{Primitive::BOX, min, max};
+    p.label = -1;
+    return add(p);
 }
 
 int AnalyticScene::addPlane(const osg::Vec3d& point, const osg::Vec3d& normal, double halfExtent)
 {
     osg::Vec3d unit = normal;
     unit.normalize();
-    _primitives.push_back({Primitive::PLANE, point, unit, halfExtent});
-    return static_cast<int>(_primitives.size()) - 1;
+    Primitive p{Primitive::PLANE, point, unit, halfExtent};
+    p.label = -1;
+    return add(p);
+}
+
+int AnalyticScene::addSegment(const osg::Vec3d& base, const osg::Vec3d& axis, double z0, double r0, double z1,
+                              double r1, bool capAtZ0, bool capAtZ1, int label)
+{
+    osg::Vec3d unit = axis;
+    unit.normalize();
+    Primitive p{Primitive::SEGMENT, base, unit};
+    p.label = label;
+    p.z0 = z0;
+    p.r0 = r0;
+    p.z1 = z1;
+    p.r1 = r1;
+    p.cap0 = capAtZ0;
+    p.cap1 = capAtZ1;
+    return add(p);
+}
+
+int AnalyticScene::addCylinder(const osg::Vec3d& tail, const osg::Vec3d& axis, double length, double radius)
+{
+    return addSegment(tail, axis, 0.0, radius, length, radius, true, true);
+}
+
+int AnalyticScene::addCone(const osg::Vec3d& tail, const osg::Vec3d& axis, double length, double radius)
+{
+    return addSegment(tail, axis, 0.0, radius, length, 0.0, true, false);
+}
+
+int AnalyticScene::addArrow(const osg::Vec3d& tail, const osg::Vec3d& axis, double length, double radius,
+                            double headLength, double headRadius)
+{
+    const double headStart = length * (1.0 - headLength);
+    const int label = addSegment(tail, axis, 0.0, radius, headStart, radius, true, false);
+    return addSegment(tail, axis, headStart, radius * headRadius, length, 0.0, true, false, label);
+}
+
+bool AnalyticScene::intersectSegment(const Primitive& p, const osg::Vec3d& origin,
+                                     const osg::Vec3d& direction, double minDistance, double& distance,
+                                     osg::Vec3d& normal) const
+{
+    // A frame with the axis along z.
+    const osg::Vec3d helper = std::fabs(p.b.x()) < 0.9 ? osg::Vec3d(1, 0, 0) : osg::Vec3d(0, 1, 0);
+    osg::Vec3d u = helper ^ p.b;
+    u.normalize();
+    const osg::Vec3d v = p.b ^ u;
+    const osg::Vec3d rel = origin - p.a;
+    const osg::Vec3d o(rel * u, rel * v, rel * p.b), d(direction * u, direction * v, direction * p.b);
+    distance = std::numeric_limits<double>::infinity();
+    osg::Vec3d local;
+    auto consider = [&](double t, const osg::Vec3d& n)
+    {
+        if (t >= minDistance && t < distance)
+        {
+            distance = t;
+            local = n;
+        }
+    };
+    // The side: x^2 + y^2 = (r0 + slope (z - z0))^2.
+    const double slope = (p.r1 - p.r0) / (p.z1 - p.z0);
+    const double rho = p.r0 + slope * (o.z() - p.z0);
+    const double a = d.x() * d.x() + d.y() * d.y() - slope * slope * d.z() * d.z();
+    const double b = o.x() * d.x() + o.y() * d.y() - slope * rho * d.z();
+    const double c = o.x() * o.x() + o.y() * o.y() - rho * rho;
+    const double discriminant = b * b - a * c;
+    if (std::fabs(a) > 1e-15 && discriminant >= 0.0)
+    {
+        for (double sign : {-1.0, 1.0})
+        {
+            const double t = (-b + sign * std::sqrt(discriminant)) / a;
+            const osg::Vec3d hit = o + d * t;
+            const double radius = p.r0 + slope * (hit.z() - p.z0);
+            if (hit.z() >= p.z0 && hit.z() <= p.z1 && radius >= 0.0)
+            {
+                osg::Vec3d n(hit.x(), hit.y(), -slope * radius);
+                n.normalize();
+                consider(t, n);
+            }
+        }
+    }
+    auto cap = [&](bool present, double z, double radius, double facing)
+    {
+        if (!present || std::fabs(d.z()) < 1e-15)
+            return;
+        const double t = (z - o.z()) / d.z();
+        const osg::Vec3d hit = o + d * t;
+        if (hit.x() * hit.x() + hit.y() * hit.y() <= radius * radius)
+            consider(t, osg::Vec3d(0.0, 0.0, facing));
+    };
+    cap(p.cap0, p.z0, p.r0, -1.0);
+    cap(p.cap1, p.z1, p.r1, 1.0);
+    if (distance == std::numeric_limits<double>::infinity())
+        return false;
+    normal = u * local.x() + v * local.y() + p.b * local.z();
+    return true;
 }
 
 bool AnalyticScene::intersect(const Primitive& p, const osg::Vec3d& origin, const osg::Vec3d& direction,
@@ -31,6 +136,8 @@ bool AnalyticScene::intersect(const Primitive& p, const osg::Vec3d& origin, cons
 {
     switch (p.kind)
     {
+    case Primitive::SEGMENT:
+        return intersectSegment(p, origin, direction, minDistance, distance, normal);
     case Primitive::SPHERE:
     {
         const double radius = p.b.x();
@@ -104,7 +211,7 @@ RayHit AnalyticScene::cast(const osg::Vec3d& origin, const osg::Vec3d& direction
         if (intersect(_primitives[i], origin, direction, minDistance, distance, normal) &&
             distance < nearest.distance)
         {
-            nearest.label = static_cast<int>(i);
+            nearest.label = _primitives[i].label;
             nearest.distance = distance;
             nearest.normal = normal;
         }

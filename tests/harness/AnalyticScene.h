@@ -7,6 +7,7 @@
 #include "RenderHarness.h"
 
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace osgGlyphsTest
@@ -33,6 +34,20 @@ public:
      * given distance of point count (a finite square quad when used for a plane drawable). */
     int addPlane(const osg::Vec3d& point, const osg::Vec3d& normal, double halfExtent);
 
+    /** A solid of revolution about the axis from base (unit axis): radius r0 at z0 changing
+     * linearly to r1 at z1 (distances along the axis), with flat caps where asked.
+     * Cylinders, cones and arrows are made of these. Returns the label given (or, for -1,
+     * the next label: labels count the solids in the order they were added). */
+    int addSegment(const osg::Vec3d& base, const osg::Vec3d& axis, double z0, double r0, double z1, double r1,
+                   bool capAtZ0, bool capAtZ1, int label = -1);
+
+    /** The vector glyphs with osgGlyphs' convention: tail at base, unit axis, given length and
+     * radius; arrows with the head's length ratio and radius ratio. All parts share one label. */
+    int addCylinder(const osg::Vec3d& tail, const osg::Vec3d& axis, double length, double radius);
+    int addCone(const osg::Vec3d& tail, const osg::Vec3d& axis, double length, double radius);
+    int addArrow(const osg::Vec3d& tail, const osg::Vec3d& axis, double length, double radius,
+                 double headLength, double headRadius);
+
     /** The nearest hit at least minDistance along the ray. */
     RayHit cast(const osg::Vec3d& origin, const osg::Vec3d& direction, double minDistance = 0.0) const;
 
@@ -51,15 +66,23 @@ private:
         {
             SPHERE,
             BOX,
-            PLANE
+            PLANE,
+            SEGMENT
         } kind;
-        osg::Vec3d a, b; // sphere: center, (radius, 0, 0); box: min, max; plane: point, normal
+        osg::Vec3d a, b; // sphere: center, (radius, 0, 0); box: min, max; plane and segment: point, axis
         double extent = 0.0;
+        int label = 0;
+        double z0 = 0.0, r0 = 0.0, z1 = 0.0, r1 = 0.0; // segment
+        bool cap0 = false, cap1 = false;
     };
+    int add(const Primitive& primitive);
+    bool intersectSegment(const Primitive& p, const osg::Vec3d& origin, const osg::Vec3d& direction,
+                          double minDistance, double& distance, osg::Vec3d& normal) const;
     bool intersect(const Primitive& primitive, const osg::Vec3d& origin, const osg::Vec3d& direction,
                    double minDistance, double& distance, osg::Vec3d& normal) const;
 
     std::vector<Primitive> _primitives;
+    int _numLabels = 0;
 };
 
 }
