@@ -1,9 +1,11 @@
 #include <osgGlyphs/GlyphCloud>
 
+#include "GlyphMeshes.h"
 #include "HalfFloat.h"
 
 #include <osg/Notify>
 #include <osg/RenderInfo>
+#include <osg/Viewport>
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +29,107 @@ uint32_t pack(uint16_t halfRadius, uint32_t quantisedScalar)
 
 const uint16_t HALF_ONE = 0x3c00;
 
+/** Shares an array in a shallow copy and clones it in a deep one. */
+template <class ArrayType>
+osg::ref_ptr<ArrayType> copyArray(const osg::ref_ptr<ArrayType>& array, const osg::CopyOp& copyop)
+{
+    return array.valid() ? static_cast<ArrayType*>(copyop(array.get())) : nullptr;
+}
+
+/** The same per-glyph values four times, for the paper's billboards of four vertices. */
+template <class ArrayType>
+osg::ref_ptr<ArrayType> repeatFourTimes(const ArrayType* array, unsigned int count)
+{
+    if (!array)
+        return nullptr;
+    osg::ref_ptr<ArrayType> repeated = new ArrayType;
+    repeated->reserve(4 * count);
+    for (unsigned int i = 0; i < count; ++i)
+        repeated->insert(repeated->end(), 4, (*array)[i]);
+    repeated->setNormalize(array->getNormalize());
+    repeated->setPreserveDataType(array->getPreserveDataType());
+    return repeated;
+}
+
+}
+
+void GlyphCloud::configureDrawing()
+{
+    const GlyphTechnique technique = getEffectiveTechnique();
+    osg::Array* vectors = hasVectorShape() ? _vectors.get() : nullptr;
+    osg::Array* colors = _colorMode == GlyphColorMode::RGBA ? _colors.get() : nullptr;
+    getVertexAttribArrayList().clear();
+    setNormalArray(nullptr);
+    removePrimitiveSet(0, getNumPrimitiveSets());
+    auto attach = [&](unsigned int index, osg::Array* array, osg::Array::Binding binding)
+    {
+        if (array)
+            array->setBinding(binding);
+        setVertexAttribArray(index, array);
+    };
+
+    switch (technique)
+    {
+    case GlyphTechnique::Instanced:
+    case GlyphTechnique::Polygons:
+    {
+        // One instance per glyph: the per-glyph arrays advance once per instance.
+        if (technique == GlyphTechnique::Instanced)
+        {
+            setVertexArray(new osg::Vec3Array(4)); // the quad's corners come from gl_VertexID
+            addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLE_STRIP, 0, 4, _numGlyphs));
+        }
+        else
+        {
+            if (!_meshVertices.valid())
+            {
+                const detail::GlyphMesh mesh = detail::createGlyphMesh(_shape, _polygonSlices, _polygonStacks,
+                                                                       _arrowParams.x(), _arrowParams.y());
+                _meshVertices = mesh.vertices;
+                _meshNormals = mesh.normals;
+                _meshTriangles = mesh.triangles;
+            }
+            setVertexArray(_meshVertices.get());
+            setNormalArray(_meshNormals.get(), osg::Array::BIND_PER_VERTEX);
+            osg::ref_ptr<osg::DrawElementsUInt> triangles = new osg::DrawElementsUInt(*_meshTriangles);
+            triangles->setNumInstances(_numGlyphs);
+            addPrimitiveSet(triangles.get());
+        }
+        attach(GlyphStateSets::POSITION_ATTRIBUTE, _positions.get(), osg::Array::BIND_PER_VERTEX);
+        attach(GlyphStateSets::PACKED_ATTRIBUTE, _packed.get(), osg::Array::BIND_PER_VERTEX);
+        attach(GlyphStateSets::COLOR_ATTRIBUTE, colors, osg::Array::BIND_PER_VERTEX);
+        attach(GlyphStateSets::VECTOR_ATTRIBUTE, vectors, osg::Array::BIND_PER_VERTEX);
+        break;
+    }
+    case GlyphTechnique::PaperQuad:
+    {
+        // The paper's data path: four vertices per glyph, each with a copy of its attributes.
+        setVertexArray(repeatFourTimes(_positions.get(), _numGlyphs).get());
+        osg::ref_ptr<osg::Vec2Array> corners = new osg::Vec2Array;
+        corners->reserve(4 * _numGlyphs);
+        for (unsigned int i = 0; i < _numGlyphs; ++i)
+            for (const osg::Vec2& corner :
+                 {osg::Vec2(-1, -1), osg::Vec2(1, -1), osg::Vec2(1, 1), osg::Vec2(-1, 1)})
+                corners->push_back(corner);
+        attach(GlyphStateSets::CORNER_ATTRIBUTE, corners.get(), osg::Array::BIND_PER_VERTEX);
+        attach(GlyphStateSets::PACKED_ATTRIBUTE, repeatFourTimes(_packed.get(), _numGlyphs).get(),
+               osg::Array::BIND_PER_VERTEX);
+        attach(GlyphStateSets::COLOR_ATTRIBUTE, repeatFourTimes(_colors.get(), colors ? _numGlyphs : 0).get(),
+               osg::Array::BIND_PER_VERTEX);
+        attach(GlyphStateSets::VECTOR_ATTRIBUTE,
+               repeatFourTimes(_vectors.get(), vectors ? _numGlyphs : 0).get(), osg::Array::BIND_PER_VERTEX);
+        addPrimitiveSet(new osg::DrawArrays(GL_QUADS, 0, 4 * _numGlyphs));
+        break;
+    }
+    default:
+        // One vertex per glyph.
+        setVertexArray(_positions.get());
+        attach(GlyphStateSets::PACKED_ATTRIBUTE, _packed.get(), osg::Array::BIND_PER_VERTEX);
+        attach(GlyphStateSets::COLOR_ATTRIBUTE, colors, osg::Array::BIND_PER_VERTEX);
+        attach(GlyphStateSets::VECTOR_ATTRIBUTE, vectors, osg::Array::BIND_PER_VERTEX);
+        addPrimitiveSet(new osg::DrawArrays(GL_POINTS, 0, _numGlyphs));
+        break;
+    }
 }
 
 GlyphCloud::GlyphCloud()
@@ -35,22 +138,16 @@ GlyphCloud::GlyphCloud()
 }
 
 GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
-    : osg::Geometry(other, copyop), _colorMap(other._colorMap), _radius(other._radius), _color(other._color),
-      _colorMode(other._colorMode), _shape(other._shape), _technique(other._technique),
-      _anchor(other._anchor), _lengthScale(other._lengthScale), _uniformLength(other._uniformLength),
-      _arrowParams(other._arrowParams), _lit(other._lit), _autoRange(other._autoRange),
+    : osg::Geometry(other, copyop), _positions(copyArray(other._positions, copyop)),
+      _radii(copyArray(other._radii, copyop)), _colors(copyArray(other._colors, copyop)),
+      _scalars(copyArray(other._scalars, copyop)), _vectors(copyArray(other._vectors, copyop)),
+      _colorMap(other._colorMap), _radius(other._radius), _color(other._color), _colorMode(other._colorMode),
+      _shape(other._shape), _technique(other._technique), _anchor(other._anchor),
+      _lengthScale(other._lengthScale), _uniformLength(other._uniformLength),
+      _arrowParams(other._arrowParams), _polygonSlices(other._polygonSlices),
+      _polygonStacks(other._polygonStacks), _lit(other._lit), _autoRange(other._autoRange),
       _rangeMin(other._rangeMin), _rangeMax(other._rangeMax), _material(other._material)
 {
-    // osg::Geometry copied (or shared) the arrays it draws; pick them up again by their role.
-    _positions = dynamic_cast<osg::Vec3Array*>(getVertexArray());
-    _packed = dynamic_cast<osg::UIntArray*>(getVertexAttribArray(GlyphStateSets::PACKED_ATTRIBUTE));
-    _colors = dynamic_cast<osg::Vec4ubArray*>(getVertexAttribArray(GlyphStateSets::COLOR_ATTRIBUTE));
-    _vectors = dynamic_cast<osg::Vec3Array*>(getVertexAttribArray(GlyphStateSets::VECTOR_ATTRIBUTE));
-    if (!_vectors && other._vectors.valid())
-        _vectors = osg::clone(other._vectors.get(), copyop); // held but not drawn by a sphere cloud
-    _radii = other._radii.valid() ? osg::clone(other._radii.get(), copyop) : nullptr;
-    _scalars = other._scalars.valid() ? osg::clone(other._scalars.get(), copyop) : nullptr;
-    _drawArrays = getNumPrimitiveSets() ? dynamic_cast<osg::DrawArrays*>(getPrimitiveSet(0)) : nullptr;
     initialize();
 }
 
@@ -58,19 +155,8 @@ void GlyphCloud::initialize()
 {
     setUseDisplayList(false);
     setUseVertexBufferObjects(true);
-    if (!_drawArrays)
-    {
-        removePrimitiveSet(0, getNumPrimitiveSets());
-        _drawArrays = new osg::DrawArrays(GL_POINTS, 0, 0);
-        addPrimitiveSet(_drawArrays.get());
-    }
-    if (!_packed)
-    {
-        _packed = new osg::UIntArray;
-        _packed->setPreserveDataType(true); // an integer attribute: glVertexAttribIPointer
-        _packed->setBinding(osg::Array::BIND_PER_VERTEX);
-        setVertexAttribArray(GlyphStateSets::PACKED_ATTRIBUTE, _packed.get());
-    }
+    _packed = new osg::UIntArray;
+    _packed->setPreserveDataType(true); // an integer attribute: glVertexAttribIPointer
     // Uniforms are per cloud: each copy gets its own.
     _radiusScaleUniform = new osg::Uniform("osgGlyphs_radiusScale", 1.0f);
     _baseColorUniform = new osg::Uniform("osgGlyphs_baseColor", _color);
@@ -78,6 +164,7 @@ void GlyphCloud::initialize()
     _materialUniform = new osg::Uniform("osgGlyphs_material", _material);
     _vectorParamsUniform = new osg::Uniform("osgGlyphs_vectorParams", osg::Vec3());
     _arrowParamsUniform = new osg::Uniform("osgGlyphs_arrowParams", _arrowParams);
+    _viewportUniform = new osg::Uniform("osgGlyphs_viewport", osg::Vec4(0.0f, 0.0f, 1.0f, 1.0f));
     updateVectorUniforms();
     if (!_colorMap)
         _colorMap = ColorMap::getBuiltin("viridis");
@@ -88,7 +175,6 @@ void GlyphCloud::initialize()
 void GlyphCloud::setPositions(osg::Vec3Array* positions)
 {
     _positions = positions;
-    setVertexArray(positions);
     dirtyGlyphs();
 }
 
@@ -114,7 +200,6 @@ void GlyphCloud::setColor(const osg::Vec4& color)
         _colorMode = GlyphColorMode::Uniform;
         _colors = nullptr;
         _scalars = nullptr;
-        setVertexAttribArray(GlyphStateSets::COLOR_ATTRIBUTE, nullptr);
         dirtyGlyphs();
         updateStateSet();
     }
@@ -126,11 +211,7 @@ void GlyphCloud::setColors(osg::Vec4ubArray* colors)
     _scalars = nullptr;
     _colorMode = colors ? GlyphColorMode::RGBA : GlyphColorMode::Uniform;
     if (colors)
-    {
         colors->setNormalize(true);
-        colors->setBinding(osg::Array::BIND_PER_VERTEX);
-    }
-    setVertexAttribArray(GlyphStateSets::COLOR_ATTRIBUTE, colors);
     dirtyGlyphs();
     updateStateSet();
 }
@@ -139,7 +220,6 @@ void GlyphCloud::setScalars(osg::FloatArray* scalars)
 {
     _scalars = scalars;
     _colors = nullptr;
-    setVertexAttribArray(GlyphStateSets::COLOR_ATTRIBUTE, nullptr);
     _colorMode = scalars ? GlyphColorMode::Scalar : GlyphColorMode::Uniform;
     dirtyGlyphs();
     updateStateSet();
@@ -148,7 +228,7 @@ void GlyphCloud::setScalars(osg::FloatArray* scalars)
 void GlyphCloud::setShape(GlyphShape shape)
 {
     _shape = shape;
-    setVertexAttribArray(GlyphStateSets::VECTOR_ATTRIBUTE, hasVectorShape() ? _vectors.get() : nullptr);
+    _meshVertices = nullptr;
     dirtyGlyphs();
     updateStateSet();
 }
@@ -156,16 +236,26 @@ void GlyphCloud::setShape(GlyphShape shape)
 void GlyphCloud::setTechnique(GlyphTechnique technique)
 {
     _technique = technique;
+    configureDrawing();
     updateStateSet();
+}
+
+void GlyphCloud::setPolygonResolution(unsigned int slices, unsigned int stacks)
+{
+    _polygonSlices = slices;
+    _polygonStacks = stacks;
+    _meshVertices = nullptr;
+    configureDrawing();
+}
+
+GlyphTechnique GlyphCloud::getEffectiveTechnique() const
+{
+    return isTechniqueSupported(_technique, _shape) ? _technique : DEFAULT_GLYPH_TECHNIQUE;
 }
 
 void GlyphCloud::setVectors(osg::Vec3Array* vectors)
 {
     _vectors = vectors;
-    if (vectors)
-        vectors->setBinding(osg::Array::BIND_PER_VERTEX);
-    // Only vector shapes upload the vectors.
-    setVertexAttribArray(GlyphStateSets::VECTOR_ATTRIBUTE, hasVectorShape() ? vectors : nullptr);
     dirtyGlyphs();
 }
 
@@ -194,6 +284,11 @@ void GlyphCloud::setArrowHead(float lengthRatio, float radiusRatio)
 {
     _arrowParams.set(lengthRatio, radiusRatio);
     _arrowParamsUniform->set(_arrowParams);
+    if (_meshVertices.valid() && _shape == GlyphShape::Arrow)
+    {
+        _meshVertices = nullptr; // the polygons technique's arrow mesh bakes the ratios in
+        configureDrawing();
+    }
     dirtyBound();
 }
 
@@ -374,7 +469,6 @@ void GlyphCloud::updatePackedAttributes()
         OSG_INFO << "osgGlyphs::GlyphCloud \"" << getName() << "\": " << zeroVectors << " of " << count
                  << " glyphs have a zero vector and no direction; they are not drawn" << std::endl;
 
-    _drawArrays->setCount(static_cast<GLsizei>(count));
     _radiusScaleUniform->set(_radiusScale);
     if (_autoRange)
     {
@@ -382,6 +476,7 @@ void GlyphCloud::updatePackedAttributes()
         _rangeMax = _dataMax;
     }
     updateScalarMapping();
+    configureDrawing();
 }
 
 void GlyphCloud::updateScalarMapping()
@@ -400,7 +495,7 @@ void GlyphCloud::updateStateSet()
 {
     GlyphVariant variant;
     variant.shape = _shape;
-    variant.technique = _technique;
+    variant.technique = getEffectiveTechnique();
     variant.colorMode = _colorMode;
     variant.lit = _lit;
     variant.colorMap = _colorMode == GlyphColorMode::Scalar ? _colorMap.get() : nullptr;
@@ -465,6 +560,12 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
         program->apply(*_materialUniform);
         program->apply(*_vectorParamsUniform);
         program->apply(*_arrowParamsUniform);
+        if (const osg::Viewport* viewport = renderInfo.getState()->getCurrentViewport())
+        {
+            _viewportUniform->set(
+                osg::Vec4(viewport->x(), viewport->y(), viewport->width(), viewport->height()));
+            program->apply(*_viewportUniform);
+        }
     }
     osg::Geometry::drawImplementation(renderInfo);
 }

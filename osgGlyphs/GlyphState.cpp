@@ -4,7 +4,14 @@
 
 #include <osg/ContextData>
 #include <osg/GLObjects>
+#include <osg/Point>
+#include <osg/PointSprite>
+#include <osg/Texture2D>
 #include <osg/Uniform>
+#include <osg/VertexAttribDivisor>
+
+#include <algorithm>
+#include <cmath>
 
 using namespace osgGlyphs;
 
@@ -13,7 +20,6 @@ namespace
 
 const char* const COLOR_SCALAR_DEFINE = "OSGGLYPHS_COLOR_SCALAR";
 const char* const COLOR_RGBA_DEFINE = "OSGGLYPHS_COLOR_RGBA";
-const char* const PAPER_DEFINE = "OSGGLYPHS_PAPER";
 
 /** The define that selects a shape's code, or nullptr for spheres. */
 const char* shapeDefine(GlyphShape shape)
@@ -40,6 +46,58 @@ struct ShaderStage
 const ShaderStage GLYPH_STAGES[] = {{osg::Shader::VERTEX, "glyph.vert"},
                                     {osg::Shader::GEOMETRY, "glyph.geom"},
                                     {osg::Shader::FRAGMENT, "glyph.frag"}};
+
+/** The define that selects a technique's code, or nullptr for the geometry-shader default. */
+const char* techniqueDefine(GlyphTechnique technique)
+{
+    switch (technique)
+    {
+    case GlyphTechnique::Instanced:
+        return "OSGGLYPHS_TECHNIQUE_INSTANCED";
+    case GlyphTechnique::PointSprite:
+        return "OSGGLYPHS_TECHNIQUE_SPRITE";
+    case GlyphTechnique::PaperQuad:
+        return "OSGGLYPHS_TECHNIQUE_PAPER";
+    case GlyphTechnique::Polygons:
+        return "OSGGLYPHS_TECHNIQUE_POLYGONS";
+    case GlyphTechnique::TextureBlend:
+        return "OSGGLYPHS_TECHNIQUE_TEXTURE";
+    case GlyphTechnique::PointsFloor:
+        return "OSGGLYPHS_TECHNIQUE_POINTS";
+    default:
+        return nullptr;
+    }
+}
+
+/** texture-blend's two textures: a circle mask and a grey sphere lit by a headlight. */
+osg::ref_ptr<osg::Texture2D> createSpriteTexture(bool lighting)
+{
+    const int size = 256;
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    image->allocateImage(size, size, 1, GL_RGBA, GL_UNSIGNED_BYTE);
+    for (int t = 0; t < size; ++t)
+    {
+        for (int s = 0; s < size; ++s)
+        {
+            const float x = (s + 0.5f) / size * 2.0f - 1.0f, y = 1.0f - (t + 0.5f) / size * 2.0f;
+            const float r2 = x * x + y * y;
+            const float nz = std::sqrt(std::max(1.0f - r2, 0.0f));
+            // Blinn-Phong under a headlight, with the default material of GlyphCloud.
+            const float halfway = std::max((nz + 1.0f) / std::sqrt(2.0f * (1.0f + nz)), 0.0f);
+            const float shade = std::min(0.2f + nz + 0.4f * std::pow(halfway, 48.0f), 1.0f);
+            unsigned char* texel = image->data(s, t);
+            const auto grey = static_cast<unsigned char>(255.0f * (lighting ? shade : 1.0f));
+            texel[0] = texel[1] = texel[2] = grey;
+            texel[3] = r2 <= 1.0f ? 255 : 0;
+        }
+    }
+    osg::ref_ptr<osg::Texture2D> texture = new osg::Texture2D(image.get());
+    texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR_MIPMAP_LINEAR);
+    texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    texture->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
+    texture->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
+    return texture;
+}
 
 /** Lives in a context's osg::ContextData: when OSG deletes or discards that context's GL
  * objects, it releases the shared glyph state of that context, which no scene graph under
@@ -69,6 +127,99 @@ private:
 
 const char* const osgGlyphs::GLYPH_LIT_DEFINE = "OSGGLYPHS_LIT";
 
+const char* osgGlyphs::getTechniqueName(GlyphTechnique technique)
+{
+    switch (technique)
+    {
+    case GlyphTechnique::GeometryShader:
+        return "geometry-shader";
+    case GlyphTechnique::Instanced:
+        return "instanced";
+    case GlyphTechnique::PointSprite:
+        return "point-sprite";
+    case GlyphTechnique::PaperQuad:
+        return "paper-quad";
+    case GlyphTechnique::Polygons:
+        return "polygons";
+    case GlyphTechnique::TextureBlend:
+        return "texture-blend";
+    case GlyphTechnique::TextureMulti:
+        return "texture-multi";
+    case GlyphTechnique::PointsFloor:
+        return "points-floor";
+    }
+    return "unknown";
+}
+
+std::vector<GlyphTechnique> osgGlyphs::getTechniques()
+{
+    return {GlyphTechnique::GeometryShader, GlyphTechnique::Instanced,  GlyphTechnique::PointSprite,
+            GlyphTechnique::PaperQuad,      GlyphTechnique::Polygons,   GlyphTechnique::TextureBlend,
+            GlyphTechnique::TextureMulti,   GlyphTechnique::PointsFloor};
+}
+
+bool osgGlyphs::parseTechnique(const std::string& name, GlyphTechnique& technique)
+{
+    if (name == "default")
+    {
+        technique = DEFAULT_GLYPH_TECHNIQUE;
+        return true;
+    }
+    for (GlyphTechnique candidate : getTechniques())
+    {
+        if (name == getTechniqueName(candidate))
+        {
+            technique = candidate;
+            return true;
+        }
+    }
+    return false;
+}
+
+bool osgGlyphs::isTechniqueSupported(GlyphTechnique technique, GlyphShape shape)
+{
+    switch (technique)
+    {
+    case GlyphTechnique::PaperQuad:
+        return shape == GlyphShape::Sphere || shape == GlyphShape::Cone;
+    case GlyphTechnique::TextureBlend:
+        return shape == GlyphShape::Sphere; // the paper's textures are of spheres
+    case GlyphTechnique::TextureMulti:
+        return false;
+    default:
+        return true;
+    }
+}
+
+const char* osgGlyphs::getShapeName(GlyphShape shape)
+{
+    switch (shape)
+    {
+    case GlyphShape::Cone:
+        return "cone";
+    case GlyphShape::Arrow:
+        return "arrow";
+    case GlyphShape::Cylinder:
+        return "cylinder";
+    default:
+        return "sphere";
+    }
+}
+
+bool osgGlyphs::parseShape(const std::string& name, GlyphShape& shape)
+{
+    for (GlyphShape candidate :
+         {GlyphShape::Sphere, GlyphShape::Cone, GlyphShape::Arrow, GlyphShape::Cylinder})
+    {
+        if (name == getShapeName(candidate))
+        {
+            shape = candidate;
+            return true;
+        }
+    }
+    return false;
+}
+
 void osgGlyphs::setGlyphLighting(osg::StateSet& stateSet, bool lit)
 {
     stateSet.setDefine(GLYPH_LIT_DEFINE, osg::StateAttribute::OVERRIDE |
@@ -81,28 +232,33 @@ GlyphStateSets* GlyphStateSets::instance()
     return s_instance.get();
 }
 
-osg::Program* GlyphStateSets::getProgramLocked()
+osg::Program* GlyphStateSets::getProgramLocked(bool geometryStage)
 {
-    if (_program)
-        return _program.get();
-    _program = new osg::Program;
-    _program->setName("osgGlyphs");
+    osg::ref_ptr<osg::Program>& program = _programs[geometryStage ? 1 : 0];
+    if (program)
+        return program.get();
+    program = new osg::Program;
+    program->setName(geometryStage ? "osgGlyphs geometry-shader" : "osgGlyphs");
     for (const ShaderStage& stage : GLYPH_STAGES)
     {
+        if (stage.type == osg::Shader::GEOMETRY && !geometryStage)
+            continue;
         osg::ref_ptr<osg::Shader> shader = new osg::Shader(stage.type, detail::loadShaderSource(stage.file));
         shader->setName(stage.file);
-        _program->addShader(shader.get());
+        program->addShader(shader.get());
     }
-    _program->addBindAttribLocation("osgGlyphs_packed", PACKED_ATTRIBUTE);
-    _program->addBindAttribLocation("osgGlyphs_color", COLOR_ATTRIBUTE);
-    _program->addBindAttribLocation("osgGlyphs_vector", VECTOR_ATTRIBUTE);
-    return _program.get();
+    program->addBindAttribLocation("osgGlyphs_packed", PACKED_ATTRIBUTE);
+    program->addBindAttribLocation("osgGlyphs_color", COLOR_ATTRIBUTE);
+    program->addBindAttribLocation("osgGlyphs_vector", VECTOR_ATTRIBUTE);
+    program->addBindAttribLocation("osgGlyphs_position", POSITION_ATTRIBUTE);
+    program->addBindAttribLocation("osgGlyphs_corner", CORNER_ATTRIBUTE);
+    return program.get();
 }
 
-osg::Program* GlyphStateSets::getProgram()
+osg::Program* GlyphStateSets::getProgram(GlyphTechnique technique)
 {
     std::lock_guard<std::mutex> lock(_mutex);
-    return getProgramLocked();
+    return getProgramLocked(technique == GlyphTechnique::GeometryShader);
 }
 
 osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
@@ -113,11 +269,33 @@ osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
         return stateSet.get();
 
     stateSet = new osg::StateSet;
-    stateSet->setAttributeAndModes(getProgramLocked());
+    stateSet->setAttributeAndModes(getProgramLocked(variant.technique == GlyphTechnique::GeometryShader));
     if (const char* define = shapeDefine(variant.shape))
         stateSet->setDefine(define);
-    if (variant.technique == GlyphTechnique::Paper && variant.shape == GlyphShape::Cone)
-        stateSet->setDefine(PAPER_DEFINE);
+    if (const char* define = techniqueDefine(variant.technique))
+        stateSet->setDefine(define);
+    switch (variant.technique)
+    {
+    case GlyphTechnique::Instanced:
+    case GlyphTechnique::Polygons:
+        for (unsigned int index : {POSITION_ATTRIBUTE, PACKED_ATTRIBUTE, COLOR_ATTRIBUTE, VECTOR_ATTRIBUTE})
+            stateSet->setAttribute(new osg::VertexAttribDivisor(index, 1));
+        break;
+    case GlyphTechnique::PointSprite:
+    case GlyphTechnique::TextureBlend:
+        stateSet->setMode(GL_VERTEX_PROGRAM_POINT_SIZE, osg::StateAttribute::ON);
+        stateSet->setTextureAttributeAndModes(MASK_UNIT, new osg::PointSprite, osg::StateAttribute::ON);
+        break;
+    default:
+        break;
+    }
+    if (variant.technique == GlyphTechnique::TextureBlend)
+    {
+        stateSet->setTextureAttribute(MASK_UNIT, createSpriteTexture(false));
+        stateSet->setTextureAttribute(LIGHTING_UNIT, createSpriteTexture(true));
+        stateSet->addUniform(new osg::Uniform("osgGlyphs_maskTexture", static_cast<int>(MASK_UNIT)));
+        stateSet->addUniform(new osg::Uniform("osgGlyphs_lightingTexture", static_cast<int>(LIGHTING_UNIT)));
+    }
     if (variant.lit)
         stateSet->setDefine(GLYPH_LIT_DEFINE);
     if (variant.colorMode == GlyphColorMode::RGBA)
@@ -135,11 +313,14 @@ osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
 void GlyphStateSets::reloadShaders()
 {
     std::lock_guard<std::mutex> lock(_mutex);
-    for (unsigned int i = 0; _program && i < _program->getNumShaders(); ++i)
+    for (const osg::ref_ptr<osg::Program>& program : _programs)
     {
-        osg::Shader* shader = _program->getShader(i);
-        shader->setShaderSource(detail::loadShaderSource(shader->getName()));
-        shader->dirtyShader();
+        for (unsigned int i = 0; program && i < program->getNumShaders(); ++i)
+        {
+            osg::Shader* shader = program->getShader(i);
+            shader->setShaderSource(detail::loadShaderSource(shader->getName()));
+            shader->dirtyShader();
+        }
     }
 }
 
@@ -151,8 +332,9 @@ void GlyphStateSets::observeContext(unsigned int contextID)
 void GlyphStateSets::releaseGLObjects(osg::State* state) const
 {
     std::lock_guard<std::mutex> lock(_mutex);
-    if (_program)
-        _program->releaseGLObjects(state);
+    for (const osg::ref_ptr<osg::Program>& program : _programs)
+        if (program)
+            program->releaseGLObjects(state);
     for (const auto& entry : _stateSets)
         entry.second->releaseGLObjects(state);
 }

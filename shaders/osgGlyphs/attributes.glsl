@@ -5,7 +5,11 @@
 //   bits 16..31  scalar, quantised to 0..65535 over the data's own range
 // osgGlyphs_color: RGBA8 per glyph (OSGGLYPHS_COLOR_RGBA only).
 // osgGlyphs_vector: direction and magnitude per glyph (vector shapes only).
+// osgGlyphs_position: the glyph's position, for instanced techniques (else gl_Vertex).
 
+#ifdef OSGGLYPHS_PER_INSTANCE
+in vec3 osgGlyphs_position;
+#endif
 in uint osgGlyphs_packed;
 #ifdef OSGGLYPHS_COLOR_RGBA
 in vec4 osgGlyphs_color;
@@ -49,3 +53,35 @@ vec4 glyphColor()
     return osgGlyphs_baseColor;
 #endif
 }
+
+vec4 glyphPosition()
+{
+#ifdef OSGGLYPHS_PER_INSTANCE
+    return vec4(osgGlyphs_position, 1.0);
+#else
+    return gl_Vertex;
+#endif
+}
+
+Glyph decodeGlyph()
+{
+    Glyph glyph;
+    vec3 center = (gl_ModelViewMatrix * glyphPosition()).xyz;
+    // A glyph scales with the model-view transform (uniform scale assumed).
+    float scale = length(gl_ModelViewMatrix[0].xyz);
+    glyph.sphere = vec4(center, glyphRadius() * scale);
+    glyph.axis = vec4(0.0);
+    glyph.color = glyphColor();
+#ifdef OSGGLYPHS_VECTOR_SHAPE
+    vec3 vector = mat3(gl_ModelViewMatrix) * osgGlyphs_vector;
+    float magnitude = length(vector);
+    float len = osgGlyphs_vectorParams.y > 0.5 ? osgGlyphs_vectorParams.x * scale : osgGlyphs_vectorParams.x * magnitude;
+    if (!(magnitude > 0.0) || !(len > 0.0))
+        glyph.sphere.w = 0.0; // no direction: not drawn
+    vec3 axis = vector / magnitude;
+    glyph.sphere.xyz = center - axis * (len * osgGlyphs_vectorParams.z);
+    glyph.axis = vec4(axis, len);
+#endif
+    return glyph;
+}
+

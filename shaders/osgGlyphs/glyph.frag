@@ -1,6 +1,8 @@
 #version 330 compatibility
-// osgGlyphs: ray-casts the glyph's exact surface, lights it and writes its true depth, so that
-// glyphs intersect each other and ordinary geometry as if they were tessellated exactly.
+// osgGlyphs: the glyph's pixels. The exact techniques ray-cast the glyph's surface, light it
+// and write its true depth, so that glyphs intersect each other and ordinary geometry as if
+// they were tessellated exactly; the paper's, the polygon and the texture techniques draw
+// what those methods draw.
 
 #include "shapes.glsl"
 #include "projection.glsl"
@@ -9,19 +11,17 @@
 #include "paper.glsl"
 #include "lighting.glsl"
 
-flat in vec4 fragSphere;
-flat in vec4 fragAxis;
-flat in vec4 fragColor;
-noperspective in vec3 fragRayNear;
-noperspective in vec3 fragRayFar;
-#ifdef OSGGLYPHS_PAPER
-in vec2 fragBillboard;
-flat in vec4 fragBillboardFrame;
+#define OSGGLYPHS_VARYING in
+#include "varyings.glsl"
+
+#ifdef OSGGLYPHS_TECHNIQUE_TEXTURE
+uniform sampler2D osgGlyphs_maskTexture;     // the circle
+uniform sampler2D osgGlyphs_lightingTexture; // a lit grey sphere
 #endif
 
 out vec4 color;
 
-#ifndef OSGGLYPHS_PAPER
+#ifdef OSGGLYPHS_RAYCAST
 /** The nearest surface point along the ray (t from the near plane) and its unit normal, or
   * false. A glyph entered before the near plane is cut there: the cut faces the viewer. */
 bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
@@ -57,20 +57,26 @@ bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
     return true;
 #endif
 }
+
+void rayUnderFragment(out vec3 origin, out vec3 direction)
+{
+#ifdef OSGGLYPHS_TECHNIQUE_SPRITE
+    // gl_PointCoord runs from the sprite's upper-left corner.
+    vec2 ndc = fragSprite.xy + (vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y) * 2.0 - 1.0) * fragSprite.zw;
+    origin = unprojectNdc(vec3(ndc, -1.0));
+    direction = normalize(unprojectNdc(vec3(ndc, 1.0)) - origin);
+#else
+    origin = fragRayNear;
+    direction = normalize(fragRayFar - fragRayNear);
+#endif
+}
 #endif
 
 void main()
 {
-#ifdef OSGGLYPHS_PAPER
-    vec3 local;
-    if (!paperCone(fragBillboard, fragAxis.x, fragAxis.y, local))
-        discard;
-    // Back to eye space: x across the projected axis, y along it, z towards the viewer.
-    vec3 normal = normalize(vec3(local.x * fragBillboardFrame.xy + local.y * fragBillboardFrame.zw, local.z));
-    color = vec4(shade(fragColor.rgb, vec3(0.0), normal, vec3(0.0, 0.0, 1.0)), fragColor.a);
-#else
-    vec3 origin = fragRayNear;
-    vec3 direction = normalize(fragRayFar - fragRayNear);
+#if defined(OSGGLYPHS_RAYCAST)
+    vec3 origin, direction;
+    rayUnderFragment(origin, direction);
     float t;
     vec3 normal;
     if (!castRay(origin, direction, t, normal))
@@ -81,5 +87,23 @@ void main()
         discard; // beyond the far plane, where fixed-function geometry is clipped too
     gl_FragDepth = windowDepth(ndcZ);
     color = vec4(shade(fragColor.rgb, position, normal, -direction), fragColor.a);
+#elif defined(OSGGLYPHS_TECHNIQUE_PAPER)
+    vec3 normal;
+    float depth;
+    if (!paperGlyph(fragLocal.xy, fragSphere, fragAxis, fragFrame, normal, depth))
+        discard;
+#ifndef OSGGLYPHS_VECTOR_SHAPE
+    gl_FragDepth = depth;
+#endif
+    color = vec4(shade(fragColor.rgb, fragSphere.xyz, normal, vec3(0.0, 0.0, 1.0)), fragColor.a);
+#elif defined(OSGGLYPHS_TECHNIQUE_POLYGONS)
+    vec3 toEye = isOrthographic() ? vec3(0.0, 0.0, 1.0) : normalize(-fragFrame.xyz);
+    color = vec4(shade(fragColor.rgb, fragFrame.xyz, normalize(fragLocal), toEye), fragColor.a);
+#elif defined(OSGGLYPHS_TECHNIQUE_TEXTURE)
+    if (texture(osgGlyphs_maskTexture, gl_PointCoord).a < 0.5)
+        discard;
+    color = vec4(fragColor.rgb * texture(osgGlyphs_lightingTexture, gl_PointCoord).rgb, fragColor.a);
+#else // OSGGLYPHS_TECHNIQUE_POINTS
+    color = fragColor;
 #endif
 }

@@ -1,8 +1,9 @@
-// osgGlyphs: the cone of Aguirre, Gutierrez and Perrin (TPCG 2010, section 4), kept as a
-// benchmark technique: a billboard on which a base ellipse and two tangent lines are drawn,
-// with approximate lighting and the billboard's own depth (no depth correction).
+// osgGlyphs: the glyphs of Aguirre, Gutierrez and Perrin (TPCG 2010), kept as a benchmark
+// technique: a billboard per glyph, the sphere lit with the orthographic normal and given the
+// depth of the paper's equation 1, the cone drawn from a base ellipse and two tangents with
+// the billboard's flat depth.
 
-#ifdef OSGGLYPHS_PAPER
+#ifdef OSGGLYPHS_TECHNIQUE_PAPER
 
 /** Whether a point of the billboard, in units of the base radius with the base centre at the
   * origin and the projected axis along +y, lies on the cone; and its approximate normal
@@ -33,6 +34,32 @@ bool paperCone(vec2 p, float d, float h, out vec3 normal)
         return true;
     }
     return false;
+}
+
+/** The paper's glyph at billboard point p: its eye-space normal and (spheres) window depth. */
+bool paperGlyph(vec2 p, vec4 sphere, vec4 axis, vec4 frame, out vec3 normal, out float depth)
+{
+    depth = gl_FragCoord.z;
+#ifdef OSGGLYPHS_VECTOR_SHAPE
+    vec3 local;
+    if (!paperCone(p, axis.x, axis.y, local))
+        return false;
+    normal = normalize(vec3(local.x * frame.xy + local.y * frame.zw, local.z));
+    return true;
+#else
+    float r2 = dot(p, p);
+    if (r2 > 1.0)
+        return false;
+    normal = vec3(p, sqrt(1.0 - r2)); // the orthographic normal (figure 2)
+    // Equation 1, Z = f / (f - n) (1 - n / d), at the distance d of the lit point: the paper
+    // prints f n / (f - n) as the factor, which does not reach 1 at the far plane.
+    mat4 projection = gl_ProjectionMatrix;
+    float n = projection[3][2] / (projection[2][2] - 1.0);
+    float f = projection[3][2] / (projection[2][2] + 1.0);
+    float d = -(sphere.z + sphere.w * normal.z);
+    depth = f / (f - n) * (1.0 - n / d);
+    return true;
+#endif
 }
 
 #endif
