@@ -33,4 +33,13 @@ if(NOT OSGGLYPHS_FIND_PUBLIC_ONLY)
     osgglyphs_require(OSMesa osmesa libosmesa6-dev)
     osgglyphs_require(EGL egl libegl-dev)
     osgglyphs_require(GLM glm libglm-dev)
+    # fast_float: locale-independent number parsing for the point readers (header-only).
+    if(NOT TARGET FastFloat::fast_float)
+        find_package(FastFloat CONFIG QUIET)
+        if(NOT FastFloat_FOUND)
+            message(FATAL_ERROR
+                "osgGlyphs: the dependency 'fast_float' (FastFloatConfig.cmake) was not found. "
+                "Install the Debian package 'libfast-float-dev' (apt-get install libfast-float-dev).")
+        endif()
+    endif()
 endif()
