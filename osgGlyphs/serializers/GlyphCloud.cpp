@@ -1,0 +1,202 @@
+#include <osgGlyphs/GlyphCloud>
+
+#include <osgDB/InputStream>
+#include <osgDB/ObjectWrapper>
+#include <osgDB/OutputStream>
+
+#include <limits>
+
+using osgGlyphs::GlyphCloud;
+
+static std::ostream& exactFloats(std::ostream& out)
+{
+    out.precision(std::numeric_limits<float>::max_digits10);
+    return out;
+}
+
+// Enumerations are written by the names the viewer and the benchmark use ("cone", "polygons").
+
+static bool checkShape(const GlyphCloud&)
+{
+    return true;
+}
+
+static bool readShape(osgDB::InputStream& is, GlyphCloud& cloud)
+{
+    std::string name;
+    is >> name;
+    osgGlyphs::GlyphShape shape;
+    if (!osgGlyphs::parseShape(name, shape))
+    {
+        is.throwException("osgGlyphs::GlyphCloud: unknown shape \"" + name + "\"");
+        return false;
+    }
+    cloud.setShape(shape);
+    return true;
+}
+
+static bool writeShape(osgDB::OutputStream& os, const GlyphCloud& cloud)
+{
+    // Shape is the cloud's first property. Text streams write floats with 6 significant digits
+    // by default; from here on they get enough digits for every float to read back exactly.
+    os << exactFloats;
+    os << std::string(osgGlyphs::getShapeName(cloud.getShape())) << std::endl;
+    return true;
+}
+
+static bool checkTechnique(const GlyphCloud&)
+{
+    return true;
+}
+
+static bool readTechnique(osgDB::InputStream& is, GlyphCloud& cloud)
+{
+    std::string name;
+    is >> name;
+    osgGlyphs::GlyphTechnique technique;
+    if (!osgGlyphs::parseTechnique(name, technique))
+    {
+        is.throwException("osgGlyphs::GlyphCloud: unknown technique \"" + name + "\"");
+        return false;
+    }
+    cloud.setTechnique(technique);
+    return true;
+}
+
+static bool writeTechnique(osgDB::OutputStream& os, const GlyphCloud& cloud)
+{
+    os << std::string(osgGlyphs::getTechniqueName(cloud.getTechnique())) << std::endl;
+    return true;
+}
+
+static const char* const ANCHOR_NAMES[] = {"tail", "center", "head"};
+
+static bool checkAnchor(const GlyphCloud&)
+{
+    return true;
+}
+
+static bool readAnchor(osgDB::InputStream& is, GlyphCloud& cloud)
+{
+    std::string name;
+    is >> name;
+    for (int i = 0; i < 3; ++i)
+    {
+        if (name == ANCHOR_NAMES[i])
+        {
+            cloud.setAnchor(static_cast<osgGlyphs::GlyphAnchor>(i));
+            return true;
+        }
+    }
+    is.throwException("osgGlyphs::GlyphCloud: unknown anchor \"" + name + "\"");
+    return false;
+}
+
+static bool writeAnchor(osgDB::OutputStream& os, const GlyphCloud& cloud)
+{
+    os << std::string(ANCHOR_NAMES[static_cast<int>(cloud.getAnchor())]) << std::endl;
+    return true;
+}
+
+static bool checkScalarRange(const GlyphCloud& cloud)
+{
+    return !cloud.getScalarRangeIsAutomatic();
+}
+
+static bool readScalarRange(osgDB::InputStream& is, GlyphCloud& cloud)
+{
+    float min = 0.0f, max = 1.0f;
+    is >> min >> max;
+    cloud.setScalarRange(min, max);
+    return true;
+}
+
+static bool writeScalarRange(osgDB::OutputStream& os, const GlyphCloud& cloud)
+{
+    os << cloud.getScalarRangeMin() << cloud.getScalarRangeMax() << std::endl;
+    return true;
+}
+
+static bool checkMaterial(const GlyphCloud&)
+{
+    return true;
+}
+
+static bool readMaterial(osgDB::InputStream& is, GlyphCloud& cloud)
+{
+    float ambient = 0.0f, specular = 0.0f, shininess = 0.0f;
+    is >> ambient >> specular >> shininess;
+    cloud.setMaterial(ambient, specular, shininess);
+    return true;
+}
+
+static bool writeMaterial(osgDB::OutputStream& os, const GlyphCloud& cloud)
+{
+    os << cloud.getAmbient() << cloud.getSpecular() << cloud.getShininess() << std::endl;
+    return true;
+}
+
+static bool checkArrowHead(const GlyphCloud&)
+{
+    return true;
+}
+
+static bool readArrowHead(osgDB::InputStream& is, GlyphCloud& cloud)
+{
+    float length = 0.0f, radius = 0.0f;
+    is >> length >> radius;
+    cloud.setArrowHead(length, radius);
+    return true;
+}
+
+static bool writeArrowHead(osgDB::OutputStream& os, const GlyphCloud& cloud)
+{
+    os << cloud.getArrowHeadLengthRatio() << cloud.getArrowHeadRadiusRatio() << std::endl;
+    return true;
+}
+
+static bool checkPolygonResolution(const GlyphCloud&)
+{
+    return true;
+}
+
+static bool readPolygonResolution(osgDB::InputStream& is, GlyphCloud& cloud)
+{
+    unsigned int slices = 0, stacks = 0;
+    is >> slices >> stacks;
+    cloud.setPolygonResolution(slices, stacks);
+    return true;
+}
+
+static bool writePolygonResolution(osgDB::OutputStream& os, const GlyphCloud& cloud)
+{
+    os << cloud.getPolygonSlices() << cloud.getPolygonStacks() << std::endl;
+    return true;
+}
+
+// osg::Geometry is left out of the chain: its arrays and primitive sets are derived from the
+// cloud's own, which are written here. So is osg::Node, whose StateSet would be the shared
+// program variant (shaders and all), chosen again from the cloud's settings on reading.
+REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyphs::GlyphCloud,
+                        "osg::Object osg::Drawable osgGlyphs::GlyphCloud")
+{
+    ADD_USER_SERIALIZER(Shape);
+    // The single colour comes before the arrays: setting it later would drop per-glyph colours.
+    ADD_VEC4_SERIALIZER(Color, osg::Vec4(0.8f, 0.8f, 0.8f, 1.0f));
+    ADD_USER_SERIALIZER(Technique);
+    ADD_OBJECT_SERIALIZER(Positions, osg::Vec3Array, NULL);
+    ADD_FLOAT_SERIALIZER(Radius, 1.0f);
+    ADD_OBJECT_SERIALIZER(Radii, osg::FloatArray, NULL);
+    ADD_OBJECT_SERIALIZER(Colors, osg::Vec4ubArray, NULL);
+    ADD_OBJECT_SERIALIZER(Scalars, osg::FloatArray, NULL);
+    ADD_OBJECT_SERIALIZER(Vectors, osg::Vec3Array, NULL);
+    ADD_OBJECT_SERIALIZER(ColorMap, osgGlyphs::ColorMap, NULL);
+    ADD_USER_SERIALIZER(ScalarRange);
+    ADD_BOOL_SERIALIZER(Lit, true);
+    ADD_USER_SERIALIZER(Material);
+    ADD_FLOAT_SERIALIZER(LengthScale, 1.0f);
+    ADD_BOOL_SERIALIZER(UniformLength, false);
+    ADD_USER_SERIALIZER(Anchor);
+    ADD_USER_SERIALIZER(ArrowHead);
+    ADD_USER_SERIALIZER(PolygonResolution);
+}

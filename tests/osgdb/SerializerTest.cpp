@@ -1,0 +1,135 @@
+// GlyphCloud through OSG's native formats: every attribute survives .osgt, .osgb and .osgx
+// bit for bit, and the read scene renders the same pixels.
+
+#include "GlyphTestScenes.h"
+
+#include <osgGlyphs/GlyphCloud>
+
+#include <osgDB/ReadFile>
+#include <osgDB/WriteFile>
+
+#include <cstring>
+
+using namespace osgGlyphsTest;
+using osgGlyphs::GlyphCloud;
+
+namespace
+{
+
+osg::ref_ptr<GlyphCloud> createFullCloud()
+{
+    osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+    cloud->setName("everything");
+    cloud->setShape(osgGlyphs::GlyphShape::Arrow);
+    cloud->setTechnique(osgGlyphs::GlyphTechnique::Polygons);
+    cloud->setPositions(makeArray<osg::Vec3Array>(
+        {osg::Vec3(-1.5f, 0.1f, 0.3f), osg::Vec3(0.2f, -0.4f, 0.0f), osg::Vec3(1.4f, 0.3f, -0.5f)}));
+    cloud->setVectors(makeArray<osg::Vec3Array>(
+        {osg::Vec3(0.3f, 0.2f, 1.1f), osg::Vec3(-1.0f, 0.1f, 0.4f), osg::Vec3(0.5f, 0.5f, -0.9f)}));
+    cloud->setRadii(makeArray<osg::FloatArray>({0.11f, 0.17f, 0.123456f}));
+    cloud->setScalars(makeArray<osg::FloatArray>({-2.5f, 0.1f, 7.25f}));
+    cloud->setColorMap(new osgGlyphs::ColorMap(
+        "custom", {osg::Vec4(0.1f, 0.2f, 0.3f, 1.0f), osg::Vec4(0.9f, 0.5f, 0.1f, 1.0f)}));
+    cloud->setScalarRange(-1.0f, 5.0f);
+    cloud->setLit(false);
+    cloud->setMaterial(0.31f, 0.27f, 17.0f);
+    cloud->setLengthScale(0.75f);
+    cloud->setUniformLength(true);
+    cloud->setAnchor(osgGlyphs::GlyphAnchor::Tail);
+    cloud->setArrowHead(0.4f, 1.7f);
+    cloud->setPolygonResolution(12, 6);
+    return cloud;
+}
+
+template <class ArrayType>
+bool sameBits(const ArrayType* a, const ArrayType* b)
+{
+    if (!a || !b)
+        return a == b;
+    return a->size() == b->size() &&
+           std::memcmp(a->getDataPointer(), b->getDataPointer(), a->getTotalDataSize()) == 0;
+}
+
+void expectSameCloud(const GlyphCloud& a, const GlyphCloud& b)
+{
+    EXPECT_EQ(a.getName(), b.getName());
+    EXPECT_EQ(a.getShape(), b.getShape());
+    EXPECT_EQ(a.getTechnique(), b.getTechnique());
+    EXPECT_TRUE(sameBits(a.getPositions(), b.getPositions()));
+    EXPECT_TRUE(sameBits(a.getVectors(), b.getVectors()));
+    EXPECT_TRUE(sameBits(a.getRadii(), b.getRadii()));
+    EXPECT_TRUE(sameBits(a.getScalars(), b.getScalars()));
+    EXPECT_TRUE(sameBits(a.getColors(), b.getColors()));
+    EXPECT_EQ(a.getColorMode(), b.getColorMode());
+    ASSERT_NE(b.getColorMap(), nullptr);
+    EXPECT_EQ(a.getColorMap()->getName(), b.getColorMap()->getName());
+    EXPECT_EQ(a.getColorMap()->getColors(), b.getColorMap()->getColors());
+    EXPECT_EQ(a.getScalarRangeIsAutomatic(), b.getScalarRangeIsAutomatic());
+    EXPECT_EQ(a.getScalarRangeMin(), b.getScalarRangeMin());
+    EXPECT_EQ(a.getScalarRangeMax(), b.getScalarRangeMax());
+    EXPECT_EQ(a.getLit(), b.getLit());
+    EXPECT_EQ(a.getAmbient(), b.getAmbient());
+    EXPECT_EQ(a.getSpecular(), b.getSpecular());
+    EXPECT_EQ(a.getShininess(), b.getShininess());
+    EXPECT_EQ(a.getLengthScale(), b.getLengthScale());
+    EXPECT_EQ(a.getUniformLength(), b.getUniformLength());
+    EXPECT_EQ(a.getAnchor(), b.getAnchor());
+    EXPECT_EQ(a.getArrowHeadLengthRatio(), b.getArrowHeadLengthRatio());
+    EXPECT_EQ(a.getArrowHeadRadiusRatio(), b.getArrowHeadRadiusRatio());
+    EXPECT_EQ(a.getPolygonSlices(), b.getPolygonSlices());
+    EXPECT_EQ(a.getPolygonStacks(), b.getPolygonStacks());
+    EXPECT_EQ(a.getColor(), b.getColor());
+    EXPECT_EQ(a.getRadius(), b.getRadius());
+}
+
+class NativeFormats : public ::testing::TestWithParam<std::string>
+{
+};
+
+}
+
+TEST_P(NativeFormats, RoundTripIsBitExact)
+{
+    osg::ref_ptr<GlyphCloud> original = createFullCloud();
+    osg::ref_ptr<osg::Geode> scene = group({original.get()});
+    const std::string path = outputPath("roundtrip." + GetParam());
+    ASSERT_TRUE(osgDB::writeNodeFile(*scene, path)) << path;
+
+    osg::ref_ptr<osg::Node> read = osgDB::readRefNodeFile(path);
+    ASSERT_TRUE(read.valid()) << path;
+    osg::Geode* geode = read->asGeode();
+    ASSERT_NE(geode, nullptr);
+    ASSERT_EQ(geode->getNumDrawables(), 1u);
+    const GlyphCloud* copy = dynamic_cast<const GlyphCloud*>(geode->getDrawable(0));
+    ASSERT_NE(copy, nullptr) << "read back as " << geode->getDrawable(0)->className();
+    expectSameCloud(*original, *copy);
+
+    Renderer renderer(160, 120);
+    const Frame expected = renderer.render(scene.get());
+    const Frame actual = renderer.render(read.get());
+    int differing = 0;
+    for (int y = 0; y < expected.height(); ++y)
+        for (int x = 0; x < expected.width(); ++x)
+            differing += expected.colorAt(x, y) != actual.colorAt(x, y) ? 1 : 0;
+    EXPECT_EQ(differing, 0);
+    int covered = 0;
+    for (int y = 0; y < actual.height(); ++y)
+        for (int x = 0; x < actual.width(); ++x)
+            covered += actual.isCovered(x, y) ? 1 : 0;
+    EXPECT_GT(covered, 100);
+}
+
+TEST(NativeFormatDefaults, DefaultCloudRoundTrips)
+{
+    osg::ref_ptr<GlyphCloud> original = new GlyphCloud;
+    original->setPositions(makeArray<osg::Vec3Array>({osg::Vec3(1.0f, 2.0f, 3.0f)}));
+    const std::string path = outputPath("roundtrip_default.osgt");
+    ASSERT_TRUE(osgDB::writeObjectFile(*original, path));
+    osg::ref_ptr<GlyphCloud> copy = osgDB::readRefFile<GlyphCloud>(path);
+    ASSERT_TRUE(copy.valid());
+    expectSameCloud(*original, *copy);
+    EXPECT_TRUE(copy->getScalarRangeIsAutomatic());
+}
+
+INSTANTIATE_TEST_SUITE_P(, NativeFormats, ::testing::Values("osgt", "osgb", "osgx"),
+                         [](const ::testing::TestParamInfo<std::string>& param) { return param.param; });
