@@ -55,6 +55,7 @@ osg::ref_ptr<ArrayType> repeatFourTimes(const ArrayType* array, unsigned int cou
 
 void GlyphCloud::configureDrawing()
 {
+    dirtyGLObjects(); // display lists, where used, hold the previous arrays
     const GlyphTechnique technique = getEffectiveTechnique();
     osg::Array* vectors = hasVectorShape() ? _vectors.get() : nullptr;
     osg::Array* colors = _colorMode == GlyphColorMode::RGBA ? _colors.get() : nullptr;
@@ -506,11 +507,13 @@ double GlyphCloud::getGPUBytesPerGlyph() const
 {
     if (_numGlyphs == 0)
         return 0.0;
+    // What the technique uploads: its vertex arrays (copies, for the paper's billboards; a
+    // shared mesh or quad for the instanced ones) and the per-glyph attributes.
     double bytes = 0.0;
-    for (const osg::Array* array :
-         {static_cast<const osg::Array*>(_positions.get()), static_cast<const osg::Array*>(_packed.get()),
-          static_cast<const osg::Array*>(_colors.get())})
+    for (const osg::Array* array : {getVertexArray(), getNormalArray()})
         bytes += array ? array->getTotalDataSize() : 0;
+    for (const osg::ref_ptr<osg::Array>& array : getVertexAttribArrayList())
+        bytes += array.valid() ? array->getTotalDataSize() : 0;
     return bytes / _numGlyphs;
 }
 

@@ -1,0 +1,15 @@
+// osgglyphviewer: the scenes that need no file.
+
+#ifndef OSGGLYPHVIEWER_BUILTINSCENES_H
+#define OSGGLYPHVIEWER_BUILTINSCENES_H 1
+
+#include "ViewerScene.h"
+
+/** The built-in scene, shown without a file or --random: 2000 spheres (seeded) coloured by
+ * height, cutting through a fixed-function box and sphere, seen from its own view. */
+osg::ref_ptr<ViewerScene> createDefaultScene(const ViewerOptions& options, std::string& error);
+
+/** --random N: osgGlyphs::createRandomCloud, the random dataset of the paper's benchmarks. */
+osg::ref_ptr<ViewerScene> createRandomScene(const ViewerOptions& options, std::string& error);
+
+#endif

@@ -1,0 +1,22 @@
+// osgglyphviewer: the colour legend over the view.
+
+#ifndef OSGGLYPHVIEWER_COLORLEGEND_H
+#define OSGGLYPHVIEWER_COLORLEGEND_H 1
+
+#include "GlyphMapping.h"
+
+#include <osg/Camera>
+
+/** Creates the heads-up display of a colour key: for a scalar, a vertical bar of the colour map
+ * at the right of the view with the range's maximum and minimum beside its ends and the column
+ * name above it; for categories, a swatch and a label per category.
+ *
+ * The HUD is an orthographic osg::Camera in pixels (absolute reference frame, POST_RENDER,
+ * clearing nothing and testing no depth, so the scene's depth buffer stays intact). Its update
+ * callback lays it out again whenever the viewport of reference changes size. Text is dark on a
+ * light background and light on a dark one, outlined in the background colour. Returns nullptr
+ * for ColorKey::None. */
+osg::ref_ptr<osg::Camera> createColorLegend(const ColorKey& key, osg::Camera* reference,
+                                            const osg::Vec4& background);
+
+#endif

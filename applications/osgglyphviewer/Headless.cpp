@@ -1,0 +1,107 @@
+#include "Headless.h"
+
+#include "ViewerCamera.h"
+
+#include <osgGlyphs/DepthImage>
+#include <osgGlyphs/OffscreenViewer>
+
+#include <osgDB/WriteFile>
+
+#include <iostream>
+#include <vector>
+
+namespace
+{
+
+double millisecondsSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+/** Writes the outputs of the frame just rendered; depth comes from sceneCapture, which read it
+ * before the legend was drawn, with the projection the scene was drawn with. */
+bool writeOutputs(osgGlyphs::OffscreenViewer& viewer, const osgGlyphs::FrameCapture* sceneCapture,
+                  const ViewerOptions& options, std::string& error)
+{
+    if (!options.output.empty() && !osgDB::writeImageFile(*viewer.getColorImage(), options.output))
+    {
+        error = options.output + ": cannot write the image";
+        return false;
+    }
+    if (!options.depthOutput.empty())
+    {
+        osg::ref_ptr<osg::Image> distance = osgGlyphs::createEyeDistanceImage(
+            *sceneCapture->getDepthImage(), sceneCapture->getProjectionMatrix());
+        if (!distance.valid() || !osgGlyphs::writePFM(*distance, options.depthOutput, error))
+        {
+            error = options.depthOutput + ": " + (error.empty() ? "cannot convert the depth image" : error);
+            return false;
+        }
+    }
+    return true;
+}
+
+}
+
+int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
+                    std::chrono::steady_clock::time_point start)
+{
+    osg::ref_ptr<osgGlyphs::OffscreenViewer> viewer =
+        new osgGlyphs::OffscreenViewer(options.width, options.height, options.backend);
+    if (!viewer->valid())
+    {
+        std::cerr << PROGRAM << ": cannot create a headless OpenGL context through "
+                  << osgGlyphs::getHeadlessBackendName(options.backend) << std::endl;
+        return 1;
+    }
+    const double aspect = static_cast<double>(options.width) / options.height;
+    osg::Camera* camera = viewer->getCamera();
+    camera->setClearColor(options.background);
+    camera->setProjectionMatrixAsPerspective(options.fov, aspect, 1.0, 1000.0);
+    scene.addLegend(camera, options.background);
+    viewer->setSceneData(scene.getRoot());
+
+    // The legend is drawn after the scene: depth and projection are read before it.
+    osg::ref_ptr<osgGlyphs::FrameCapture> sceneCapture;
+    if (!options.depthOutput.empty())
+    {
+        sceneCapture = new osgGlyphs::FrameCapture;
+        camera->setPostDrawCallback(sceneCapture.get());
+    }
+    viewer->getFrameCapture()->setCaptureDepth(false);
+
+    const CameraView home = options.hasCamera ? options.camera : scene.getHomeView(options.fov, aspect);
+    const unsigned int frames = options.frames > 0 ? options.frames : 1;
+    std::vector<double> times;
+    for (unsigned int frame = 0; frame < frames; ++frame)
+    {
+        const CameraView view = orbit(home, frame * ORBIT_DEGREES_PER_FRAME);
+        camera->setViewMatrixAsLookAt(view.eye, view.center, view.up);
+        const auto frameStart = std::chrono::steady_clock::now();
+        viewer->frame();
+        times.push_back(millisecondsSince(frameStart));
+        if (frame > 0)
+            continue;
+
+        std::string error;
+        if (!writeOutputs(*viewer, sceneCapture.get(), options, error))
+        {
+            std::cerr << PROGRAM << ": " << error << std::endl;
+            return 1;
+        }
+        const std::string size = std::to_string(options.width) + "x" + std::to_string(options.height) + ", " +
+                                 osgGlyphs::getHeadlessBackendName(viewer->getContext()->getBackend());
+        const double ms = millisecondsSince(start);
+        if (!options.output.empty())
+            std::cout << PROGRAM << ": wrote " << options.output << " (" << size << ") in " << ms << " ms"
+                      << std::endl;
+        if (!options.depthOutput.empty())
+            std::cout << PROGRAM << ": wrote " << options.depthOutput << " (eye-space depth, " << size
+                      << ") in " << ms << " ms" << std::endl;
+        if (options.output.empty() && options.depthOutput.empty())
+            std::cout << PROGRAM << ": rendered " << size << " in " << ms << " ms" << std::endl;
+    }
+    if (options.frames > 0)
+        std::cout << formatFrameTimes(times) << std::endl;
+    return 0;
+}

@@ -1,0 +1,103 @@
+#include "Interactive.h"
+
+#include "ViewerCamera.h"
+#include "ViewerEventHandler.h"
+
+#include <osgGA/StateSetManipulator>
+#include <osgGA/TrackballManipulator>
+#include <osgViewer/Viewer>
+#include <osgViewer/ViewerEventHandlers>
+#include <osgViewer/config/SingleWindow>
+
+#include <chrono>
+#include <iostream>
+#include <vector>
+
+namespace
+{
+
+/** The screenshots of key c: osgglyphviewer-screenshot_<context>_<n>.png in the working folder. */
+const char* const SCREENSHOT_PREFIX = "osgglyphviewer-screenshot";
+
+/** The standard handlers, in the order they see events. The viewer's own handler goes before
+ * the StateSetManipulator, so that l toggles both glyph and OpenGL lighting. */
+std::vector<osg::ref_ptr<osgGA::GUIEventHandler>>
+createHandlers(ViewerScene* scene, osg::StateSet* cameraState, osg::ApplicationUsage* usage)
+{
+    osg::ref_ptr<osgViewer::ScreenCaptureHandler> capture = new osgViewer::ScreenCaptureHandler(
+        new osgViewer::ScreenCaptureHandler::WriteToFile(SCREENSHOT_PREFIX, "png"));
+    return {new ViewerEventHandler(scene),
+            new osgGA::StateSetManipulator(cameraState),
+            new osgViewer::StatsHandler,
+            new osgViewer::WindowSizeHandler,
+            capture,
+            new osgViewer::HelpHandler(usage)};
+}
+
+}
+
+void describeViewerKeys(osg::ApplicationUsage& usage)
+{
+    osg::ref_ptr<osg::StateSet> stateSet = new osg::StateSet;
+    for (const auto& handler : createHandlers(nullptr, stateSet.get(), nullptr))
+        handler->getUsage(usage);
+    osg::ref_ptr<osgGA::TrackballManipulator> trackball = new osgGA::TrackballManipulator;
+    trackball->getUsage(usage);
+    usage.addKeyboardMouseBinding("Mouse left", "Drag to rotate about the centre");
+    usage.addKeyboardMouseBinding("Mouse middle", "Drag to pan");
+    usage.addKeyboardMouseBinding("Mouse right", "Drag up and down to zoom (or the wheel)");
+    usage.addKeyboardMouseBinding("c", std::string("Save a screenshot as ") + SCREENSHOT_PREFIX +
+                                           "_<context>_<n>.png in the working folder");
+    // The viewer's keys last: they replace the standard description of l.
+    osg::ref_ptr<ViewerEventHandler> keys = new ViewerEventHandler(nullptr);
+    keys->getUsage(usage);
+}
+
+int runInteractive(ViewerScene& scene, const ViewerOptions& options, osg::ApplicationUsage* usage)
+{
+    osg::ref_ptr<osgViewer::Viewer> viewer = new osgViewer::Viewer;
+    // One thread: keys replace the scene's content and shaders between frames.
+    viewer->setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
+    viewer->apply(new osgViewer::SingleWindow(50, 50, options.width, options.height));
+    osg::Camera* camera = viewer->getCamera();
+    if (!camera->getGraphicsContext() || !camera->getGraphicsContext()->valid())
+    {
+        std::cerr << PROGRAM
+                  << ": cannot open a window (is DISPLAY set?); render without one with --offscreen"
+                  << std::endl;
+        return 1;
+    }
+    if (osgViewer::GraphicsWindow* window =
+            dynamic_cast<osgViewer::GraphicsWindow*>(camera->getGraphicsContext()))
+        window->setWindowName(std::string(PROGRAM) + (options.file.empty() ? "" : ": " + options.file));
+    const double aspect = static_cast<double>(options.width) / options.height;
+    camera->setClearColor(options.background);
+    camera->setProjectionMatrixAsPerspective(options.fov, aspect, 1.0, 1000.0);
+    scene.addLegend(camera, options.background);
+    viewer->setSceneData(scene.getRoot());
+    for (const auto& handler : createHandlers(&scene, camera->getOrCreateStateSet(), usage))
+        viewer->addEventHandler(handler.get());
+
+    const CameraView home = options.hasCamera ? options.camera : scene.getHomeView(options.fov, aspect);
+    osg::ref_ptr<osgGA::TrackballManipulator> trackball = new osgGA::TrackballManipulator;
+    trackball->setAutoComputeHomePosition(false);
+    trackball->setHomePosition(home.eye, home.center, home.up);
+    viewer->setCameraManipulator(trackball.get());
+
+    if (options.frames == 0)
+        return viewer->run();
+
+    viewer->realize();
+    std::vector<double> times;
+    for (unsigned int frame = 0; frame < options.frames && !viewer->done(); ++frame)
+    {
+        const CameraView view = orbit(home, frame * ORBIT_DEGREES_PER_FRAME);
+        trackball->setTransformation(view.eye, view.center, view.up);
+        const auto start = std::chrono::steady_clock::now();
+        viewer->frame();
+        times.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    std::cout << formatFrameTimes(times) << std::endl;
+    return 0;
+}

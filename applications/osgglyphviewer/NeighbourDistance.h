@@ -1,0 +1,16 @@
+// osgglyphviewer: the typical spacing of points, for a default glyph size.
+
+#ifndef OSGGLYPHVIEWER_NEIGHBOURDISTANCE_H
+#define OSGGLYPHVIEWER_NEIGHBOURDISTANCE_H 1
+
+#include <osg/Vec3f>
+
+#include <vector>
+
+/** The median distance from a point to its nearest neighbour, over an evenly spaced sample of at
+ * most maxSamples points, found through a uniform grid. Points at the same place as their
+ * neighbour and non-finite points are left out. Returns 0 when there are fewer than two distinct
+ * finite points. */
+float estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions, unsigned int maxSamples = 2000);
+
+#endif

@@ -1,0 +1,349 @@
+#include "ViewerOptions.h"
+
+#include "ViewerText.h"
+
+#include <osgGlyphs/PointReader>
+
+#include <osgDB/FileUtils>
+
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+
+const char* const PROGRAM = "osgglyphviewer";
+
+namespace
+{
+
+std::vector<std::string> getTechniqueNames()
+{
+    std::vector<std::string> names;
+    for (osgGlyphs::GlyphTechnique technique : osgGlyphs::getTechniques())
+        names.push_back(osgGlyphs::getTechniqueName(technique));
+    return names;
+}
+
+/** Splits "a,b,c" into exactly count non-empty names. */
+bool splitColumns(const std::string& option, const std::string& text, std::size_t count,
+                  std::vector<std::string>& columns, std::string& error)
+{
+    columns.clear();
+    std::istringstream stream(text);
+    std::string name;
+    while (std::getline(stream, name, ','))
+        columns.push_back(name);
+    if (!text.empty() && text.back() == ',')
+        columns.push_back(std::string());
+    bool valid = columns.size() == count;
+    for (const std::string& column : columns)
+        valid = valid && !column.empty();
+    if (!valid)
+        error =
+            option + " '" + text + "': give " + std::to_string(count) + " column names separated by commas";
+    return valid;
+}
+
+/** Reads "option v1 .. vn" of n numbers, which osg::ArgumentParser cannot do beyond eight. */
+bool readNumbers(osg::ArgumentParser& arguments, const std::string& option, std::vector<double>& values,
+                 bool& found, std::string& error)
+{
+    found = false;
+    const int pos = arguments.find(option);
+    if (pos < 0)
+        return true;
+    found = true;
+    const int count = static_cast<int>(values.size());
+    for (int i = 0; i < count; ++i)
+    {
+        if (pos + 1 + i >= arguments.argc() || !arguments.isNumber(pos + 1 + i))
+        {
+            error = option + " needs " + std::to_string(count) + " numbers";
+            return false;
+        }
+        values[i] = std::atof(arguments[pos + 1 + i]);
+    }
+    arguments.remove(pos, count + 1);
+    return true;
+}
+
+bool resolveColorMap(const std::string& name, osg::ref_ptr<osgGlyphs::ColorMap>& colorMap, std::string& error)
+{
+    colorMap = osgGlyphs::ColorMap::getBuiltin(name);
+    if (colorMap.valid())
+        return true;
+    if (!osgDB::fileExists(name))
+    {
+        error = "--colormap '" + name + "': neither a built-in colour map (" +
+                joinNames(osgGlyphs::ColorMap::getBuiltinNames()) + ") nor a file";
+        return false;
+    }
+    std::string readError;
+    colorMap = osgGlyphs::ColorMap::readFile(name, readError);
+    if (!colorMap.valid())
+        error = "--colormap: " + readError;
+    return colorMap.valid();
+}
+
+/** The errors osg::ArgumentParser collected, on one line, without its program-name prefix. */
+std::string collectParserErrors(osg::ArgumentParser& arguments)
+{
+    const std::string prefix = arguments.getApplicationName() + ": ";
+    std::string message;
+    for (const auto& entry : arguments.getErrorMessageMap())
+    {
+        std::string text = entry.first;
+        if (text.compare(0, prefix.size(), prefix) == 0)
+            text.erase(0, prefix.size());
+        message += (message.empty() ? "" : "; ") + text;
+    }
+    return message + " (see --help)";
+}
+
+bool readMappingOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std::string& error)
+{
+    GlyphMappingOptions& mapping = options.mapping;
+    std::string text;
+    if (arguments.read("--position", text) &&
+        !splitColumns("--position", text, 3, mapping.positionColumns, error))
+        return false;
+    if (arguments.read("--vector", text) && !splitColumns("--vector", text, 3, mapping.vectorColumns, error))
+        return false;
+    if (arguments.read("--radius", mapping.radius) && !(mapping.radius > 0.0f))
+    {
+        error = "--radius must be positive";
+        return false;
+    }
+    arguments.read("--radius-by", mapping.radiusColumn);
+    arguments.read("--color-by", mapping.colorBy);
+    std::string colorMapName = "viridis";
+    arguments.read("--colormap", colorMapName);
+    if (!resolveColorMap(colorMapName, mapping.colorMap, error))
+        return false;
+    while (arguments.read("--range", mapping.rangeMin, mapping.rangeMax))
+        mapping.hasRange = true;
+    if (mapping.hasRange && !(mapping.rangeMin < mapping.rangeMax))
+    {
+        error = "--range: the minimum must be less than the maximum";
+        return false;
+    }
+    if (arguments.read("--length-scale", mapping.lengthScale) && !(mapping.lengthScale > 0.0f))
+    {
+        error = "--length-scale must be positive";
+        return false;
+    }
+    if (arguments.read("--glyph", text) && !osgGlyphs::parseShape(text, mapping.shape))
+    {
+        error = "--glyph '" + text + "': unknown shape (sphere, cone, arrow, cylinder)";
+        return false;
+    }
+    if (arguments.read("--technique", text) && !osgGlyphs::parseTechnique(text, mapping.technique))
+    {
+        error = "--technique '" + text + "': unknown technique (" + joinNames(getTechniqueNames()) + ")";
+        return false;
+    }
+    if (!osgGlyphs::isTechniqueSupported(mapping.technique, mapping.shape))
+        std::cerr << PROGRAM << ": warning: the " << osgGlyphs::getTechniqueName(mapping.technique)
+                  << " technique cannot draw " << osgGlyphs::getShapeName(mapping.shape)
+                  << "s; they are drawn with "
+                  << osgGlyphs::getTechniqueName(osgGlyphs::DEFAULT_GLYPH_TECHNIQUE) << std::endl;
+    while (arguments.read("--unlit"))
+        options.lit = false;
+    return true;
+}
+
+bool readInputOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std::string& error)
+{
+    arguments.read("--format", options.format);
+    int value = 0;
+    if (arguments.read("--frame", value))
+    {
+        if (value < 0)
+        {
+            error = "--frame counts from 0";
+            return false;
+        }
+        options.frame = static_cast<unsigned int>(value);
+    }
+    if (arguments.read("--random", value))
+    {
+        if (value <= 0)
+        {
+            error = "--random needs a positive number of glyphs";
+            return false;
+        }
+        options.randomCount = static_cast<unsigned int>(value);
+    }
+    if (arguments.read("--seed", value))
+        options.seed = static_cast<unsigned int>(value);
+    return true;
+}
+
+bool readViewOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std::string& error)
+{
+    if (arguments.read("--size", options.width, options.height) &&
+        (options.width <= 0 || options.height <= 0 || options.width > 16384 || options.height > 16384))
+    {
+        error = "--size: width and height must be between 1 and 16384";
+        return false;
+    }
+    std::vector<double> camera(9);
+    if (!readNumbers(arguments, "--camera", camera, options.hasCamera, error))
+        return false;
+    if (options.hasCamera)
+    {
+        options.camera.eye.set(camera[0], camera[1], camera[2]);
+        options.camera.center.set(camera[3], camera[4], camera[5]);
+        options.camera.up.set(camera[6], camera[7], camera[8]);
+        if ((options.camera.center - options.camera.eye).length2() == 0.0 ||
+            options.camera.up.length2() == 0.0)
+        {
+            error = "--camera: the eye must differ from the centre and the up vector must not be zero";
+            return false;
+        }
+    }
+    if (arguments.read("--fov", options.fov) && !(options.fov > 0.0 && options.fov < 180.0))
+    {
+        error = "--fov: the vertical field of view must be between 0 and 180 degrees";
+        return false;
+    }
+    float r = 0.0f, g = 0.0f, b = 0.0f;
+    if (arguments.read("--background", r, g, b))
+    {
+        if (r < 0.0f || r > 1.0f || g < 0.0f || g > 1.0f || b < 0.0f || b > 1.0f)
+        {
+            error = "--background: red, green and blue go from 0 to 1";
+            return false;
+        }
+        options.background.set(r, g, b, 1.0f);
+    }
+    return true;
+}
+
+bool readOutputOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std::string& error)
+{
+    while (arguments.read("--offscreen"))
+        options.offscreen = true;
+    std::string backend;
+    if (arguments.read("--headless", backend))
+    {
+        if (!osgGlyphs::parseHeadlessBackend(backend, options.backend))
+        {
+            error = "--headless '" + backend + "': unknown backend (osmesa, egl)";
+            return false;
+        }
+        options.offscreen = true;
+    }
+    if (arguments.read("--output", options.output))
+        options.offscreen = true;
+    if (arguments.read("--depth-output", options.depthOutput))
+        options.offscreen = true;
+    int frames = 0;
+    if (arguments.read("--frames", frames))
+    {
+        if (frames <= 0)
+        {
+            error = "--frames needs a positive number of frames";
+            return false;
+        }
+        options.frames = static_cast<unsigned int>(frames);
+    }
+    return true;
+}
+
+}
+
+void describeViewerOptions(osg::ApplicationUsage& usage)
+{
+    const std::string formats = joinNames(osgGlyphs::getSupportedPointFormats());
+    usage.addCommandLineOption("<file>",
+                               "A point file: " + formats +
+                                   " (by extension). Without a file or --random, a built-in scene.");
+    usage.addCommandLineOption("--format <name>",
+                               "Read the file as this format (" + formats + ") whatever its extension.");
+    usage.addCommandLineOption("--frame <n>", "The frame of a multi-frame file to show, counted from 0 "
+                                              "(default 0). Keys n and p step through the others.");
+    usage.addCommandLineOption("--random <n>", "Instead of a file, the random dataset of Aguirre et al. "
+                                               "(TPCG 2010): n glyphs in the unit cube, scalars in [0,1).");
+    usage.addCommandLineOption("--seed <s>", "The seed of --random (default 1).");
+
+    usage.addCommandLineOption("--position <x,y,z>", "Position columns (default x,y,z, then xu,yu,zu, "
+                                                     "then xs,ys,zs scaled by the simulation box).");
+    usage.addCommandLineOption("--radius <r>", "One radius for every glyph (default: from the elements, else "
+                                               "0.4 (spheres) or 0.2 (vectors) times the median "
+                                               "nearest-neighbour distance). With --radius-by, a factor.");
+    usage.addCommandLineOption("--radius-by <column>", "Radius of each glyph from a column.");
+    usage.addCommandLineOption("--color-by <column|speed>",
+                               "Colour by a column through the colour map, or by speed, the length of "
+                               "the vectors (--vector). Default: element colours where the data has an "
+                               "element column, else its red,green,blue columns, else speed where it has "
+                               "vectors (a LAMMPS dump with vx,vy,vz), else a palette of LAMMPS types or "
+                               "species, else one colour.");
+    usage.addCommandLineOption("--colormap <name|file>",
+                               "Colour map: " + joinNames(osgGlyphs::ColorMap::getBuiltinNames()) +
+                                   " (default viridis), or a file of #rrggbb lines.");
+    usage.addCommandLineOption("--range <min> <max>", "Values mapped to the ends of the colour map "
+                                                      "(default: the data's range over every frame).");
+    usage.addCommandLineOption("--vector <vx,vy,vz>", "Vector columns for cones, arrows, cylinders and speed "
+                                                      "(default vx,vy,vz, then velo_*, velocity_*).");
+    usage.addCommandLineOption("--length-scale <s>", "Vector glyph length per unit of vector length "
+                                                     "(default: the mean vector is 4 radii long).");
+    usage.addCommandLineOption("--glyph <shape>", "sphere (default), cone, arrow or cylinder; all but "
+                                                  "sphere point along the vectors.");
+    usage.addCommandLineOption("--unlit", "Flat colours instead of lit glyphs (key l toggles).");
+    usage.addCommandLineOption("--technique <name>",
+                               "How glyphs are drawn: " + joinNames(getTechniqueNames()) + " (default " +
+                                   osgGlyphs::getTechniqueName(osgGlyphs::DEFAULT_GLYPH_TECHNIQUE) + ").");
+
+    usage.addCommandLineOption("--size <w> <h>", "Window or image size in pixels (default 800 600).");
+    usage.addCommandLineOption("--camera <ex> <ey> <ez> <cx> <cy> <cz> <ux> <uy> <uz>",
+                               "Look from eye e at centre c with up vector u (default: frame the data).");
+    usage.addCommandLineOption("--fov <degrees>", "Vertical field of view (default 30).");
+    usage.addCommandLineOption("--background <r> <g> <b>", "Background colour, 0..1 (default 1 1 1).");
+
+    usage.addCommandLineOption("--offscreen", "Render without a display (through OSMesa unless --headless "
+                                              "says otherwise) instead of opening a window.");
+    usage.addCommandLineOption("--headless <osmesa|egl>",
+                               "The GL backend of --offscreen; implies --offscreen.");
+    usage.addCommandLineOption("--output <file.png>", "Write the rendered image; implies --offscreen.");
+    usage.addCommandLineOption("--depth-output <file.pfm>",
+                               "Write eye-space depth (distance from the eye plane along the view "
+                               "direction) as float PFM, rows bottom to top, background +inf; implies "
+                               "--offscreen.");
+    usage.addCommandLineOption("--frames <k>", "Render k frames, turning the camera 1 degree about the "
+                                               "centre each frame, print 'frame_ms median=.. min=.. max=..' "
+                                               "and exit (in a window too).");
+    usage.addCommandLineOption("-h or --help", "Display this help: options and keys.");
+}
+
+bool readViewerOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std::string& error)
+{
+    if (!readInputOptions(arguments, options, error) || !readMappingOptions(arguments, options, error) ||
+        !readViewOptions(arguments, options, error) || !readOutputOptions(arguments, options, error))
+        return false;
+
+    arguments.reportRemainingOptionsAsUnrecognized();
+    if (arguments.errors())
+    {
+        error = collectParserErrors(arguments);
+        return false;
+    }
+    std::vector<std::string> files;
+    for (int pos = 1; pos < arguments.argc(); ++pos)
+    {
+        if (!arguments.isOption(pos))
+            files.push_back(arguments[pos]);
+    }
+    if (files.size() > 1)
+    {
+        error = "one file at a time, not " + joinNames(files, " ");
+        return false;
+    }
+    if (!files.empty())
+        options.file = files.front();
+    if (!options.file.empty() && options.randomCount > 0)
+    {
+        error = "give a file or --random, not both";
+        return false;
+    }
+    return true;
+}

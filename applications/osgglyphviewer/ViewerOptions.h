@@ -1,0 +1,64 @@
+// osgglyphviewer: the command line.
+
+#ifndef OSGGLYPHVIEWER_VIEWEROPTIONS_H
+#define OSGGLYPHVIEWER_VIEWEROPTIONS_H 1
+
+#include "GlyphMapping.h"
+
+#include <osgGlyphs/HeadlessContext>
+
+#include <osg/ApplicationUsage>
+#include <osg/ArgumentParser>
+#include <osg/Vec3d>
+#include <osg/Vec4>
+
+#include <string>
+
+/** The program's name in messages. */
+extern const char* const PROGRAM;
+
+/** A camera placed by eye, centre and up vector. */
+struct CameraView
+{
+    osg::Vec3d eye;
+    osg::Vec3d center;
+    osg::Vec3d up = osg::Vec3d(0.0, 0.0, 1.0);
+};
+
+/** Everything the command line sets. */
+struct ViewerOptions
+{
+    // Input
+    std::string file;
+    std::string format;
+    unsigned int frame = 0;
+    unsigned int randomCount = 0; // --random N; 0: no random dataset
+    unsigned int seed = 1;
+
+    GlyphMappingOptions mapping;
+    bool lit = true;
+
+    // View
+    int width = 800;
+    int height = 600;
+    bool hasCamera = false;
+    CameraView camera;
+    double fov = 30.0;
+    osg::Vec4 background = osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f);
+
+    // Output
+    bool offscreen = false;
+    osgGlyphs::HeadlessBackend backend = osgGlyphs::HeadlessBackend::Default;
+    std::string output;
+    std::string depthOutput;
+    unsigned int frames = 0; // --frames K; 0: one frame headless, run until closed in a window
+};
+
+/** Lists every option and the keys of the window in usage. */
+void describeViewerOptions(osg::ApplicationUsage& usage);
+
+/** Reads every option from arguments, then the file name. Returns false with a one-line error
+ * on a bad value, an unknown option or a contradiction. */
+bool readViewerOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std::string& error);
+
+#endif

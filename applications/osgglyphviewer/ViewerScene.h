@@ -1,0 +1,76 @@
+// osgglyphviewer: what the viewer shows.
+
+#ifndef OSGGLYPHVIEWER_VIEWERSCENE_H
+#define OSGGLYPHVIEWER_VIEWERSCENE_H 1
+
+#include "GlyphMapping.h"
+#include "ViewerOptions.h"
+
+#include <osg/Camera>
+#include <osg/Group>
+
+#include <functional>
+#include <string>
+
+/** The scene of the viewer: the content of one frame (the glyphs, and other geometry of the
+ * built-in scene) under a group that switches glyph lighting, and a colour legend.
+ *
+ * The frames come from a FrameSource; setFrame() replaces the content. The colour key, and so
+ * the legend, is the same for every frame. */
+class ViewerScene : public osg::Referenced
+{
+public:
+    /** Makes the content of a frame, or returns nullptr with a one-line error. */
+    typedef std::function<osg::ref_ptr<osg::Node>(std::size_t frame, std::string& error)> FrameSource;
+
+    ViewerScene(const FrameSource& source, std::size_t numFrames, const ColorKey& key);
+
+    /** The scene graph: content and, once addLegend() is called, the legend. */
+    osg::Group* getRoot() { return _root.get(); }
+
+    /** The content of the current frame, which the camera frames. */
+    osg::Group* getContent() { return _content.get(); }
+
+    /** Shows the frame; on failure keeps the current one and returns false with error set. */
+    bool setFrame(std::size_t frame, std::string& error);
+    std::size_t getFrame() const { return _frame; }
+    std::size_t getNumFrames() const { return _numFrames; }
+
+    /** Lit or flat glyphs, for every glyph of the scene. */
+    void setLit(bool lit);
+    bool getLit() const { return _lit; }
+
+    const ColorKey& getColorKey() const { return _key; }
+
+    /** Adds the HUD of the colour key, laid out for the viewport of camera. */
+    void addLegend(osg::Camera* camera, const osg::Vec4& background);
+
+    /** A view chosen for the scene (the built-in scene has one); otherwise views frame the content. */
+    void setHomeView(const CameraView& view);
+    /** The scene's own view, or the content framed for a field of view and aspect ratio. */
+    CameraView getHomeView(double fovY, double aspect);
+
+    /** One line about the data and how it is drawn, for the console. */
+    void setDescription(const std::string& description) { _description = description; }
+    const std::string& getDescription() const { return _description; }
+
+protected:
+    ~ViewerScene() override = default;
+
+    FrameSource _source;
+    std::size_t _numFrames;
+    std::size_t _frame = 0;
+    bool _lit = true;
+    ColorKey _key;
+    osg::ref_ptr<osg::Group> _root;
+    osg::ref_ptr<osg::Group> _content;
+    bool _hasHomeView = false;
+    CameraView _homeView;
+    std::string _description;
+};
+
+/** The scene the options ask for: the built-in scene, --random, or a file (read with progress)
+ * mapped to glyphs, at --frame. Returns nullptr with a one-line error. */
+osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::string& error);
+
+#endif

@@ -1,0 +1,102 @@
+# One case of the osgglyphviewer tests (ctest -L viewer), on the data of WriteViewerTestData.cmake:
+#   cmake -DCASE=<case> -DVIEWER=<osgglyphviewer> -DCHECK=<osgglyphviewer_image_check>
+#         -DDATA_DIR=<data> -DWORK_DIR=<scratch> -P ViewerTest.cmake
+# Cases: render, cone, frame, malformed, unknown_column, unknown_option, frames, default, help.
+cmake_minimum_required(VERSION 3.25)
+
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}")
+set(spheres "${DATA_DIR}/spheres.lammpstrj")
+# Camera at (0, 0, 5) looking at the origin, y up: ViewerImageCheck's depth check assumes it.
+set(view --size 160 120 --camera 0 0 5 0 0 0 0 1 0 --fov 30 --radius 0.5)
+# Frame 0 of spheres.lammpstrj.
+set(centres 0 0 0 1 0.7 0.5 -1 0.7 -0.5 1 -0.7 -0.5 -1 -0.7 0.3)
+
+# Runs the viewer; sets result, out and err.
+macro(run_viewer)
+    execute_process(COMMAND "${VIEWER}" ${ARGN} WORKING_DIRECTORY "${WORK_DIR}"
+        RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    message(STATUS "osgglyphviewer ${ARGN}\n-> ${result}\n${out}${err}")
+endmacro()
+
+macro(expect_success)
+    run_viewer(${ARGN})
+    if(NOT result EQUAL 0)
+        message(FATAL_ERROR "expected success, got ${result}")
+    endif()
+endmacro()
+
+# The viewer fails with exit code 1 (no crash) and one line on stderr matching pattern.
+function(expect_failure pattern)
+    run_viewer(${ARGN})
+    if(NOT result EQUAL 1)
+        message(FATAL_ERROR "expected exit code 1, got '${result}'")
+    endif()
+    string(STRIP "${err}" line)
+    if(line MATCHES "\n" OR NOT line MATCHES "^osgglyphviewer: ${pattern}")
+        message(FATAL_ERROR "expected one line on stderr matching 'osgglyphviewer: ${pattern}'")
+    endif()
+endfunction()
+
+function(check)
+    execute_process(COMMAND "${CHECK}" ${ARGN} WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE result
+        OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    message(STATUS "check ${ARGN}\n-> ${result}\n${out}${err}")
+    if(NOT result EQUAL 0)
+        message(FATAL_ERROR "check failed: ${ARGN}")
+    endif()
+endfunction()
+
+if(CASE STREQUAL "render")
+    expect_success(${spheres} --offscreen --output render.png --depth-output render.pfm ${view})
+    if(NOT EXISTS "${WORK_DIR}/render.png")
+        message(FATAL_ERROR "render.png was not written")
+    endif()
+    check(depth render.pfm 160 120 30 5 0.5 ${centres})
+    check(coverage render.png 0.05)
+elseif(CASE STREQUAL "cone")
+    expect_success(${spheres} --output spheres.png ${view})
+    expect_success(${spheres} --output cones.png --glyph cone ${view})
+    check(coverage cones.png 0.01)
+    check(differ spheres.png cones.png 0.01)
+elseif(CASE STREQUAL "frame")
+    expect_success(${spheres} --output frame0.png ${view})
+    expect_success(${spheres} --output frame1.png --frame 1 ${view})
+    check(differ frame0.png frame1.png 0.01)
+    expect_failure("--frame 2: .*spheres.lammpstrj has 2 frames" ${spheres} --offscreen --frame 2)
+elseif(CASE STREQUAL "malformed")
+    expect_failure(".*malformed.lammpstrj:12: .*'zero'" "${DATA_DIR}/malformed.lammpstrj" --offscreen)
+elseif(CASE STREQUAL "unknown_column")
+    expect_failure("--color-by: no column 'nope' in .*; available columns: id type x y z vx vy vz"
+        ${spheres} --offscreen --color-by nope)
+elseif(CASE STREQUAL "unknown_option")
+    expect_failure("unrecognized option --frobnicate" ${spheres} --offscreen --frobnicate)
+elseif(CASE STREQUAL "frames")
+    expect_success(${spheres} --offscreen --frames 3 --size 160 120)
+    if(NOT out MATCHES "\nframe_ms median=[0-9.]+ min=[0-9.]+ max=[0-9.]+\n")
+        message(FATAL_ERROR "no frame_ms line")
+    endif()
+elseif(CASE STREQUAL "default")
+    # The README's run command: the built-in scene, its path and the time taken.
+    expect_success(--offscreen --output default.png --size 320 240)
+    if(NOT out MATCHES "wrote [^\n]*default.png \\(320x240, [a-z]+\\) in [0-9.]+ ms")
+        message(FATAL_ERROR "no line naming the image and the time")
+    endif()
+    check(coverage default.png 0.2)
+elseif(CASE STREQUAL "help")
+    expect_success(--help)
+    foreach(option --format --frame --random --seed --position --radius --radius-by --color-by --colormap --range
+            --vector --length-scale --glyph --unlit --technique --size --camera --fov --background --offscreen
+            --headless --output --depth-output --frames)
+        if(NOT out MATCHES "\n  ${option} ")
+            message(FATAL_ERROR "--help does not list ${option}")
+        endif()
+    endforeach()
+    foreach(key l n p r)
+        if(NOT out MATCHES "\n  ${key}  ")
+            message(FATAL_ERROR "--help does not list key ${key}")
+        endif()
+    endforeach()
+else()
+    message(FATAL_ERROR "unknown CASE '${CASE}'")
+endif()
