@@ -34,8 +34,9 @@ void FrameCapture::operator()(osg::RenderInfo& renderInfo) const
         _glRenderer = text(GL_RENDERER);
     }
 
-    const osg::State& state = *renderInfo.getState();
-    _projection = state.getProjectionMatrix();
+    // The camera's own matrices: OSG writes its computed near and far back into the projection,
+    // and the state's projection may belong to a HUD camera drawn after the scene.
+    _projection = camera->getProjectionMatrix();
     _view = camera->getViewMatrix();
 
     const int x = static_cast<int>(viewport->x()), y = static_cast<int>(viewport->y());

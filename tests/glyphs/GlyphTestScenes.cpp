@@ -2,6 +2,8 @@
 
 #include <osg/Geometry>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace osgGlyphsTest
@@ -61,6 +63,37 @@ int labelOfColor(const osg::Vec4ub& color, const std::vector<osg::Vec4ub>& palet
             return static_cast<int>(i);
     }
     return -1;
+}
+
+Agreement compareWithTruth(const Frame& frame, const AnalyticScene& truth,
+                           const std::vector<osg::Vec4ub>& palette, double depthTolerance,
+                           double grazingCosine)
+{
+    Agreement result;
+    for (int y = 0; y < frame.height(); ++y)
+    {
+        for (int x = 0; x < frame.width(); ++x)
+        {
+            const int label = truth.certainLabel(frame, x, y);
+            if (label == AnalyticScene::AMBIGUOUS)
+                continue;
+            ++result.certain;
+            const int shown = frame.isCovered(x, y) ? labelOfColor(frame.colorAt(x, y), palette) : -1;
+            result.wrongLabel += shown != label ? 1 : 0;
+            if (label < 0 || shown != label)
+                continue;
+            ++result.covered;
+            const RayHit hit = truth.castPixel(frame, x, y);
+            osg::Vec3d origin, direction;
+            frame.pixelRay(x + 0.5, y + 0.5, origin, direction);
+            if (std::fabs(hit.normal * direction) < grazingCosine)
+                continue;
+            const double error = std::fabs(frame.depthAt(x, y) - frame.windowDepth(hit.point));
+            result.worstDepthError = std::max(result.worstDepthError, error);
+            result.wrongDepth += error > depthTolerance ? 1 : 0;
+        }
+    }
+    return result;
 }
 
 NotifyCapture::NotifyCapture() : _previous(osg::getNotifyHandler())

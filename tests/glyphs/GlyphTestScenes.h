@@ -47,6 +47,24 @@ osg::ref_ptr<osg::Geode> group(std::initializer_list<osg::Drawable*> drawables);
 /** Which of the given unlit colours a pixel shows, -1 for none of them. */
 int labelOfColor(const osg::Vec4ub& color, const std::vector<osg::Vec4ub>& palette, int tolerance = 2);
 
+/** Counts, over the pixels whose analytic label is certain, wrong labels (the palette colour
+ * shown against the analytic nearest primitive) and wrong depths. */
+struct Agreement
+{
+    int certain = 0;
+    int covered = 0;
+    int wrongLabel = 0;
+    int wrongDepth = 0;
+    double worstDepthError = 0.0;
+};
+
+/** Compares an unlit frame with the analytic scene whose labels index the palette. Depth is
+ * checked against depthTolerance except where the ray meets the surface at a grazing angle
+ * (|cos| below grazingCosine), where the hit distance is ill-conditioned. */
+Agreement compareWithTruth(const Frame& frame, const AnalyticScene& truth,
+                           const std::vector<osg::Vec4ub>& palette, double depthTolerance,
+                           double grazingCosine = 0.0);
+
 /** Collects OSG's warnings from construction until stop(). Create it with new. */
 class NotifyCapture : public osg::NotifyHandler
 {

@@ -25,42 +25,6 @@ const osg::Vec4ub RED(255, 0, 0, 255);
 const osg::Vec4ub GREEN(0, 255, 0, 255);
 const osg::Vec4ub BLUE(0, 0, 255, 255);
 
-/** Counts, over the pixels whose analytic label is certain, wrong labels and wrong depths. */
-struct Agreement
-{
-    int certain = 0;
-    int wrongLabel = 0;
-    int wrongDepth = 0;
-    int covered = 0;
-    double worstDepthError = 0.0;
-};
-
-Agreement compareWithTruth(const Frame& frame, const AnalyticScene& truth,
-                           const std::vector<osg::Vec4ub>& palette, double depthTolerance)
-{
-    Agreement result;
-    for (int y = 0; y < frame.height(); ++y)
-    {
-        for (int x = 0; x < frame.width(); ++x)
-        {
-            const int label = truth.certainLabel(frame, x, y);
-            if (label == AnalyticScene::AMBIGUOUS)
-                continue;
-            ++result.certain;
-            const int shown = frame.isCovered(x, y) ? labelOfColor(frame.colorAt(x, y), palette) : -1;
-            result.wrongLabel += shown != label ? 1 : 0;
-            if (label < 0 || shown != label)
-                continue;
-            ++result.covered;
-            const double error =
-                std::fabs(frame.depthAt(x, y) - frame.windowDepth(truth.castPixel(frame, x, y).point));
-            result.worstDepthError = std::max(result.worstDepthError, error);
-            result.wrongDepth += error > depthTolerance ? 1 : 0;
-        }
-    }
-    return result;
-}
-
 /** 24-bit depth steps are 6e-8; the impostor's float arithmetic stays well inside 4 steps. */
 const double EXACT_DEPTH = 2.5e-7;
 

@@ -72,42 +72,12 @@ void addVectorGlyphs(AnalyticScene& scene, GlyphShape shape, const std::vector<V
 }
 
 /** Depth agrees to 5e-7 (a few 24-bit steps) everywhere but at a few tips and rims, where
- * single-precision quadratics lose digits; those may not exceed 0.5% of the pixels. */
-struct Agreement
-{
-    int certain = 0, covered = 0, wrongLabel = 0, wrongDepth = 0;
-    double worstDepthError = 0.0;
-};
-
+ * single-precision quadratics lose digits; those may not exceed 0.5% of the pixels. Grazing
+ * hits are not compared. */
 Agreement compareWithTruth(const Frame& frame, const AnalyticScene& truth,
                            const std::vector<osg::Vec4ub>& palette)
 {
-    Agreement result;
-    for (int y = 0; y < frame.height(); ++y)
-    {
-        for (int x = 0; x < frame.width(); ++x)
-        {
-            const int label = truth.certainLabel(frame, x, y);
-            if (label == AnalyticScene::AMBIGUOUS)
-                continue;
-            ++result.certain;
-            const int shown = frame.isCovered(x, y) ? labelOfColor(frame.colorAt(x, y), palette) : -1;
-            result.wrongLabel += shown != label ? 1 : 0;
-            if (label < 0 || shown != label)
-                continue;
-            ++result.covered;
-            // Where a ray grazes a surface its hit distance is ill-conditioned: skip those.
-            const RayHit hit = truth.castPixel(frame, x, y);
-            osg::Vec3d origin, direction;
-            frame.pixelRay(x + 0.5, y + 0.5, origin, direction);
-            if (std::fabs(hit.normal * direction) < 0.15)
-                continue;
-            const double error = std::fabs(frame.depthAt(x, y) - frame.windowDepth(hit.point));
-            result.worstDepthError = std::max(result.worstDepthError, error);
-            result.wrongDepth += error > 5e-7 ? 1 : 0;
-        }
-    }
-    return result;
+    return osgGlyphsTest::compareWithTruth(frame, truth, palette, 5e-7, 0.15);
 }
 
 class VectorGlyphs : public ::testing::TestWithParam<GlyphShape>
