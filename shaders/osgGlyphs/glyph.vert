@@ -37,6 +37,13 @@ void hide()
 
 void main()
 {
+#ifdef OSGGLYPHS_TECHNIQUE_POINTS
+    // The floor of vertex processing: a transformed point in the cloud's one colour, nothing decoded.
+    fragColor = osgGlyphs_baseColor;
+    gl_Position = gl_ModelViewProjectionMatrix * glyphPosition();
+    gl_PointSize = 1.0;
+    return;
+#endif
     Glyph glyph = decodeGlyph();
 #if defined(OSGGLYPHS_RAYCAST) && !defined(OSGGLYPHS_TECHNIQUE_INSTANCED) && !defined(OSGGLYPHS_TECHNIQUE_SPRITE)
     glyphOut.sphere = glyph.sphere;
@@ -128,9 +135,6 @@ void main()
     gl_Position = gl_ProjectionMatrix * vec4(glyph.sphere.xyz, 1.0);
     float pixelsPerUnit = isOrthographic() ? gl_ProjectionMatrix[1][1] : gl_ProjectionMatrix[1][1] / -glyph.sphere.z;
     gl_PointSize = max(2.0 * reach * pixelsPerUnit * 0.5 * osgGlyphs_viewport.w, 1.0);
-#else // OSGGLYPHS_TECHNIQUE_POINTS
-    gl_Position = gl_ProjectionMatrix * vec4(glyph.sphere.xyz, 1.0);
-    gl_PointSize = 1.0;
 #endif
 #endif
 }
