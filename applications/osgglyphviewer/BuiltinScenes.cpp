@@ -91,7 +91,7 @@ osg::ref_ptr<ViewerScene> createDefaultScene(const ViewerOptions& options, std::
     osg::ref_ptr<ViewerScene> scene =
         createFixedScene(geode.get(), makeScalarKey("z", options.mapping, *range.first, *range.second));
     CameraView view;
-    view.eye.set(2.5, -9.0, 4.0);
+    view.eye.set(3.5, -12.5, 5.0); // far enough back for the whole cube of spheres
     view.center.set(0.0, 0.0, 0.0);
     view.up.set(0.0, 0.0, 1.0);
     scene->setHomeView(view);
