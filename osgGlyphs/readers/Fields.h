@@ -35,9 +35,11 @@ inline const char* skipField(const char* p, const char* end)
     return p;
 }
 
-/** Parses a whole field as a float (fast_float, C locale; a leading '+' is accepted). False when
- * the field is not exactly one number. The value may be infinite or NaN: check it. */
-inline bool parseFloat(std::string_view field, float& value)
+/** Parses a whole field as a float or a double (fast_float, C locale; a leading '+' is
+ * accepted). False when the field is not exactly one number. The value may be infinite or NaN:
+ * check it. */
+template <class Number>
+inline bool parseNumber(std::string_view field, Number& value)
 {
     const char* p = field.data();
     const char* end = p + field.size();
@@ -47,15 +49,14 @@ inline bool parseFloat(std::string_view field, float& value)
     return result.ec == std::errc() && result.ptr == end && p < end;
 }
 
-/** Same for a double. */
+inline bool parseFloat(std::string_view field, float& value)
+{
+    return parseNumber(field, value);
+}
+
 inline bool parseDouble(std::string_view field, double& value)
 {
-    const char* p = field.data();
-    const char* end = p + field.size();
-    if (p < end && *p == '+')
-        ++p;
-    const fast_float::from_chars_result result = fast_float::from_chars(p, end, value);
-    return result.ec == std::errc() && result.ptr == end && p < end;
+    return parseNumber(field, value);
 }
 
 /** Parses a whole field as a decimal integer; false when it is not one or out of range. */
