@@ -58,17 +58,12 @@ bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
 #endif
 }
 
+/** The eye-space ray through this fragment's centre, from the near plane. */
 void rayUnderFragment(out vec3 origin, out vec3 direction)
 {
-#ifdef OSGGLYPHS_TECHNIQUE_SPRITE
-    // gl_PointCoord runs from the sprite's upper-left corner.
-    vec2 ndc = fragSprite.xy + (vec2(gl_PointCoord.x, 1.0 - gl_PointCoord.y) * 2.0 - 1.0) * fragSprite.zw;
+    vec2 ndc = (gl_FragCoord.xy - osgGlyphs_viewport.xy) / osgGlyphs_viewport.zw * 2.0 - 1.0;
     origin = unprojectNdc(vec3(ndc, -1.0));
     direction = normalize(unprojectNdc(vec3(ndc, 1.0)) - origin);
-#else
-    origin = fragRayNear;
-    direction = normalize(fragRayFar - fragRayNear);
-#endif
 }
 #endif
 

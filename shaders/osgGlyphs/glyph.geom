@@ -12,6 +12,8 @@ layout(triangle_strip, max_vertices = 4) out;
 
 #include "bound.glsl"
 
+const float SMALL_GLYPH_PIXELS = 8.0;
+
 in GlyphVertex
 {
     vec4 sphere;
@@ -32,13 +34,24 @@ void main()
     float nearestNdcZ;
     if (!glyphBound(glyph, corners, nearestNdcZ))
         return;
-    for (int corner = 0; corner < 4; ++corner)
+    // A glyph of a few pixels gets one triangle of twice the rectangle's area, right-angled at its
+    // first corner: rasterising primitives, not shading fragments, is what small glyphs cost.
+    int numCorners = 4;
+    vec2 toPixels = 0.5 * osgGlyphs_viewport.zw;
+    float longestSide = max(length((corners[1] - corners[0]) * toPixels), length((corners[2] - corners[0]) * toPixels));
+    if (longestSide < SMALL_GLYPH_PIXELS)
+    {
+        corners[1] = 2.0 * corners[1] - corners[0];
+        corners[2] = 2.0 * corners[2] - corners[0];
+        numCorners = 3;
+    }
+    for (int corner = 0; corner < numCorners; ++corner)
     {
         fragSphere = glyph.sphere;
-        fragAxis = glyph.axis;
         fragColor = glyph.color;
-        fragRayNear = unprojectNdc(vec3(corners[corner], -1.0));
-        fragRayFar = unprojectNdc(vec3(corners[corner], 1.0));
+#ifdef OSGGLYPHS_AXIS_VARYING
+        fragAxis = glyph.axis;
+#endif
         gl_Position = vec4(corners[corner], nearestNdcZ, 1.0);
         EmitVertex();
     }

@@ -52,8 +52,10 @@ void main()
     gl_Position = vec4(glyph.sphere.xyz, 1.0);
 #else
     fragSphere = glyph.sphere;
-    fragAxis = glyph.axis;
     fragColor = glyph.color;
+#ifdef OSGGLYPHS_AXIS_VARYING
+    fragAxis = glyph.axis;
+#endif
     if (!isDrawn(glyph))
     {
         hide();
@@ -68,10 +70,7 @@ void main()
         hide();
         return;
     }
-    vec2 ndc = corners[gl_VertexID & 3];
-    fragRayNear = unprojectNdc(vec3(ndc, -1.0));
-    fragRayFar = unprojectNdc(vec3(ndc, 1.0));
-    gl_Position = vec4(ndc, nearestNdcZ, 1.0);
+    gl_Position = vec4(corners[gl_VertexID & 3], nearestNdcZ, 1.0);
 #elif defined(OSGGLYPHS_TECHNIQUE_SPRITE)
     // A square point sprite over the exact bound.
     vec2 corners[4];
@@ -85,8 +84,7 @@ void main()
     vec2 hi = max(max(corners[0], corners[1]), max(corners[2], corners[3]));
     vec2 pixels = (hi - lo) * 0.5 * osgGlyphs_viewport.zw;
     float size = ceil(max(pixels.x, pixels.y)) + 1.0;
-    fragSprite = vec4(0.5 * (lo + hi), size / osgGlyphs_viewport.zw);
-    gl_Position = vec4(fragSprite.xy, nearestNdcZ, 1.0);
+    gl_Position = vec4(0.5 * (lo + hi), nearestNdcZ, 1.0);
     gl_PointSize = size;
 #elif defined(OSGGLYPHS_TECHNIQUE_PAPER)
     // The paper's billboard: four vertices per glyph, each carrying the glyph's attributes.

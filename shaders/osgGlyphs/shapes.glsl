@@ -26,7 +26,7 @@
 uniform vec3 osgGlyphs_vectorParams;
 uniform vec2 osgGlyphs_arrowParams;
 
-// The viewport (x, y, width, height) in pixels, for techniques that size point sprites.
+// The viewport (x, y, width, height) in pixels: rays through fragments, sizes of point sprites.
 uniform vec4 osgGlyphs_viewport;
 
 /** A glyph in eye space. */

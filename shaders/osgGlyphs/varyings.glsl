@@ -2,15 +2,10 @@
 // writes these and "in" in the fragment shader.
 
 flat OSGGLYPHS_VARYING vec4 fragSphere; // eye-space centre (vector shapes: base), radius
-flat OSGGLYPHS_VARYING vec4 fragAxis;   // vector shapes: unit axis, length
 flat OSGGLYPHS_VARYING vec4 fragColor;
-#ifdef OSGGLYPHS_RAYCAST
-#ifdef OSGGLYPHS_TECHNIQUE_SPRITE
-flat OSGGLYPHS_VARYING vec4 fragSprite; // NDC centre and half size of the point sprite
-#else
-noperspective OSGGLYPHS_VARYING vec3 fragRayNear; // eye-space point on the near plane under this fragment
-noperspective OSGGLYPHS_VARYING vec3 fragRayFar;  // and on the far plane
-#endif
+#if defined(OSGGLYPHS_VECTOR_SHAPE) || !defined(OSGGLYPHS_RAYCAST)
+#define OSGGLYPHS_AXIS_VARYING 1
+flat OSGGLYPHS_VARYING vec4 fragAxis; // vector shapes: unit axis, length
 #endif
 #if defined(OSGGLYPHS_TECHNIQUE_PAPER) || defined(OSGGLYPHS_TECHNIQUE_POLYGONS)
 OSGGLYPHS_VARYING vec3 fragLocal; // paper: billboard coordinates; polygons: eye-space normal

@@ -49,6 +49,30 @@ TEST_F(SphereImpostor, DepthAndSilhouetteAreTheExactSphere)
     EXPECT_EQ(agreement.wrongDepth, 0) << "worst depth error " << agreement.worstDepthError;
 }
 
+TEST_F(SphereImpostor, SmallSpheresAreExactToo)
+{
+    // Radii of 1 to 10 pixels: below 8 pixels a glyph's bound is one triangle, above it a quad.
+    // Each radius is k/64 of the largest, which the half-float radius holds exactly.
+    std::vector<SphereSpec> spheres;
+    std::vector<osg::Vec4ub> palette;
+    for (int i = 0; i < 24; ++i)
+    {
+        const osg::Vec3 center(-4.0f + 1.6f * (i % 6), 0.0f, -2.4f + 1.6f * (i / 6));
+        const osg::Vec4ub color(40 + 8 * i, 220 - 8 * i, (60 + 70 * i) % 256, 255);
+        spheres.push_back({center, 0.01f * (6 + 58 * i / 23), color});
+        palette.push_back(color);
+    }
+    AnalyticScene truth;
+    addSpheres(truth, spheres);
+    const Frame frame = renderer.render(group({createSphereCloud(spheres).get()}).get());
+    saveFrame(frame, "small_spheres");
+
+    const Agreement agreement = compareWithTruth(frame, truth, palette, EXACT_DEPTH);
+    EXPECT_GT(agreement.covered, 1500); // the sum of pi * (radius * 16.48)^2 is 1770 pixels
+    EXPECT_EQ(agreement.wrongLabel, 0) << "of " << agreement.certain << " certain pixels";
+    EXPECT_EQ(agreement.wrongDepth, 0) << "worst depth error " << agreement.worstDepthError;
+}
+
 TEST_F(SphereImpostor, DepthMatchesAFinelyTessellatedFixedFunctionSphere)
 {
     const osg::Vec3 center(-0.3f, 0.5f, 0.2f);

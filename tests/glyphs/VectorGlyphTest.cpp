@@ -124,6 +124,33 @@ TEST_P(VectorGlyphs, AlongAgainstAndAcrossTheViewAxis)
         << "worst depth error " << agreement.worstDepthError;
 }
 
+TEST_P(VectorGlyphs, SmallGlyphsAreExactToo)
+{
+    // Glyphs a few pixels long get a one-triangle bound, larger ones a quad. Radii are k/64 of
+    // the largest, which the half-float radius holds exactly.
+    std::vector<VectorSpec> glyphs;
+    std::vector<osg::Vec4ub> palette;
+    for (int i = 0; i < 24; ++i)
+    {
+        const osg::Vec3 position(-4.0f + 1.6f * (i % 6), 0.0f, -2.4f + 1.6f * (i / 6));
+        const float radius = 0.005f * (6 + 58 * i / 23);
+        const osg::Vec3 direction(std::cos(0.9f * i), std::sin(1.7f * i), std::sin(0.9f * i));
+        const osg::Vec4ub color(40 + 8 * i, 220 - 8 * i, (60 + 70 * i) % 256, 255);
+        glyphs.push_back({position, direction * (5.0f * radius / direction.length()), radius, color});
+        palette.push_back(color);
+    }
+    AnalyticScene truth;
+    addVectorGlyphs(truth, GetParam(), glyphs);
+    const Frame frame = renderer.render(group({createVectorCloud(GetParam(), glyphs).get()}).get());
+    saveFrame(frame, "small_vectors_" + shapeName());
+
+    const Agreement agreement = compareWithTruth(frame, truth, palette);
+    EXPECT_GT(agreement.covered, 300);
+    EXPECT_EQ(agreement.wrongLabel, 0) << "of " << agreement.certain << " certain pixels";
+    EXPECT_LE(agreement.wrongDepth, agreement.covered / 200)
+        << "worst depth error " << agreement.worstDepthError;
+}
+
 TEST_P(VectorGlyphs, OccludedByAndPiercingFixedFunctionGeometry)
 {
     renderer.setLookAt(osg::Vec3d(2.0, -9.0, 3.0), osg::Vec3d(), osg::Vec3d(0.0, 0.0, 1.0));
