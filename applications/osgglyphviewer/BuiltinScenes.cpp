@@ -12,7 +12,8 @@ namespace
 {
 
 /** Column options need a file: refuses them for the scenes without one. */
-bool checkNoColumnOptions(const GlyphMappingOptions& mapping, const char* scene, std::string& error)
+bool checkNoColumnOptions(const osgGlyphs::GlyphMappingOptions& mapping, const char* scene,
+                          std::string& error)
 {
     const char* option = !mapping.positionColumns.empty() ? "--position"
                          : !mapping.radiusColumn.empty()  ? "--radius-by"
@@ -24,17 +25,18 @@ bool checkNoColumnOptions(const GlyphMappingOptions& mapping, const char* scene,
     return option == nullptr;
 }
 
-osg::ref_ptr<ViewerScene> createFixedScene(osg::Node* content, const ColorKey& key)
+osg::ref_ptr<ViewerScene> createFixedScene(osg::Node* content, const osgGlyphs::ColorKey& key)
 {
     osg::ref_ptr<osg::Node> node = content;
     ViewerScene::FrameSource source = [node](std::size_t, std::string&) { return node; };
     return new ViewerScene(source, 1, key);
 }
 
-ColorKey makeScalarKey(const std::string& title, const GlyphMappingOptions& mapping, float min, float max)
+osgGlyphs::ColorKey makeScalarKey(const std::string& title, const osgGlyphs::GlyphMappingOptions& mapping,
+                                  float min, float max)
 {
-    ColorKey key;
-    key.kind = ColorKey::Scalar;
+    osgGlyphs::ColorKey key;
+    key.kind = osgGlyphs::ColorKey::Scalar;
     key.title = title;
     key.colorMap = mapping.colorMap;
     key.min = mapping.hasRange ? mapping.rangeMin : min;
@@ -74,7 +76,7 @@ osg::ref_ptr<ViewerScene> createDefaultScene(const ViewerOptions& options, std::
     else
         cloud->setRadii(radii.get());
     cloud->setScalars(scalars.get());
-    applyGlyphStyle(*cloud, options.mapping);
+    osgGlyphs::applyGlyphStyle(*cloud, options.mapping);
 
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     geode->addDrawable(cloud.get());
@@ -110,7 +112,7 @@ osg::ref_ptr<ViewerScene> createRandomScene(const ViewerOptions& options, std::s
     random.radius = options.mapping.radius;
     random.lengthScale = options.mapping.lengthScale;
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphs::createRandomCloud(random);
-    applyGlyphStyle(*cloud, options.mapping);
+    osgGlyphs::applyGlyphStyle(*cloud, options.mapping);
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     geode->addDrawable(cloud.get());
     osg::ref_ptr<ViewerScene> scene =

@@ -23,26 +23,6 @@ std::vector<std::string> getTechniqueNames()
     return names;
 }
 
-/** Splits "a,b,c" into exactly count non-empty names. */
-bool splitColumns(const std::string& option, const std::string& text, std::size_t count,
-                  std::vector<std::string>& columns, std::string& error)
-{
-    columns.clear();
-    std::istringstream stream(text);
-    std::string name;
-    while (std::getline(stream, name, ','))
-        columns.push_back(name);
-    if (!text.empty() && text.back() == ',')
-        columns.push_back(std::string());
-    bool valid = columns.size() == count;
-    for (const std::string& column : columns)
-        valid = valid && !column.empty();
-    if (!valid)
-        error =
-            option + " '" + text + "': give " + std::to_string(count) + " column names separated by commas";
-    return valid;
-}
-
 /** Reads "option v1 .. vn" of n numbers, which osg::ArgumentParser cannot do beyond eight. */
 bool readNumbers(osg::ArgumentParser& arguments, const std::string& option, std::vector<double>& values,
                  bool& found, std::string& error)
@@ -66,24 +46,6 @@ bool readNumbers(osg::ArgumentParser& arguments, const std::string& option, std:
     return true;
 }
 
-bool resolveColorMap(const std::string& name, osg::ref_ptr<osgGlyphs::ColorMap>& colorMap, std::string& error)
-{
-    colorMap = osgGlyphs::ColorMap::getBuiltin(name);
-    if (colorMap.valid())
-        return true;
-    if (!osgDB::fileExists(name))
-    {
-        error = "--colormap '" + name + "': neither a built-in colour map (" +
-                joinNames(osgGlyphs::ColorMap::getBuiltinNames()) + ") nor a file";
-        return false;
-    }
-    std::string readError;
-    colorMap = osgGlyphs::ColorMap::readFile(name, readError);
-    if (!colorMap.valid())
-        error = "--colormap: " + readError;
-    return colorMap.valid();
-}
-
 /** The errors osg::ArgumentParser collected, on one line, without its program-name prefix. */
 std::string collectParserErrors(osg::ArgumentParser& arguments)
 {
@@ -101,53 +63,30 @@ std::string collectParserErrors(osg::ArgumentParser& arguments)
 
 bool readMappingOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std::string& error)
 {
-    GlyphMappingOptions& mapping = options.mapping;
-    std::string text;
-    if (arguments.read("--position", text) &&
-        !splitColumns("--position", text, 3, mapping.positionColumns, error))
-        return false;
-    if (arguments.read("--vector", text) && !splitColumns("--vector", text, 3, mapping.vectorColumns, error))
-        return false;
-    if (arguments.read("--radius", mapping.radius) && !(mapping.radius > 0.0f))
+    osgGlyphs::GlyphMappingOptions& mapping = options.mapping;
+    mapping.optionPrefix = "--";
+    for (const std::string& name : osgGlyphs::getGlyphMappingOptionNames())
     {
-        error = "--radius must be positive";
-        return false;
-    }
-    arguments.read("--radius-by", mapping.radiusColumn);
-    arguments.read("--color-by", mapping.colorBy);
-    std::string colorMapName = "viridis";
-    arguments.read("--colormap", colorMapName);
-    if (!resolveColorMap(colorMapName, mapping.colorMap, error))
-        return false;
-    while (arguments.read("--range", mapping.rangeMin, mapping.rangeMax))
-        mapping.hasRange = true;
-    if (mapping.hasRange && !(mapping.rangeMin < mapping.rangeMax))
-    {
-        error = "--range: the minimum must be less than the maximum";
-        return false;
-    }
-    if (arguments.read("--length-scale", mapping.lengthScale) && !(mapping.lengthScale > 0.0f))
-    {
-        error = "--length-scale must be positive";
-        return false;
-    }
-    if (arguments.read("--glyph", text) && !osgGlyphs::parseShape(text, mapping.shape))
-    {
-        error = "--glyph '" + text + "': unknown shape (sphere, cone, arrow, cylinder)";
-        return false;
-    }
-    if (arguments.read("--technique", text) && !osgGlyphs::parseTechnique(text, mapping.technique))
-    {
-        error = "--technique '" + text + "': unknown technique (" + joinNames(getTechniqueNames()) + ")";
-        return false;
+        const std::string option = "--" + name;
+        std::string value, maximum;
+        bool found = false;
+        if (name == "unlit")
+            found = arguments.read(option);
+        else if (name == "range")
+        {
+            found = arguments.read(option, value, maximum);
+            value += "," + maximum;
+        }
+        else if (name != "color" && name != "lit")
+            found = arguments.read(option, value);
+        if (found && !osgGlyphs::setGlyphMappingOption(mapping, name, value, error))
+            return false;
     }
     if (!osgGlyphs::isTechniqueSupported(mapping.technique, mapping.shape))
         std::cerr << PROGRAM << ": warning: the " << osgGlyphs::getTechniqueName(mapping.technique)
                   << " technique cannot draw " << osgGlyphs::getShapeName(mapping.shape)
                   << "s; they are drawn with "
                   << osgGlyphs::getTechniqueName(osgGlyphs::DEFAULT_GLYPH_TECHNIQUE) << std::endl;
-    while (arguments.read("--unlit"))
-        options.lit = false;
     return true;
 }
 

@@ -3,8 +3,7 @@
 #ifndef OSGGLYPHVIEWER_VIEWEROPTIONS_H
 #define OSGGLYPHVIEWER_VIEWEROPTIONS_H 1
 
-#include "GlyphMapping.h"
-
+#include <osgGlyphs/GlyphMapping>
 #include <osgGlyphs/HeadlessContext>
 
 #include <osg/ApplicationUsage>
@@ -35,8 +34,7 @@ struct ViewerOptions
     unsigned int randomCount = 0; // --random N; 0: no random dataset
     unsigned int seed = 1;
 
-    GlyphMappingOptions mapping;
-    bool lit = true;
+    osgGlyphs::GlyphMappingOptions mapping;
 
     // View
     int width = 800;

@@ -9,7 +9,7 @@
 #include <osg/Geode>
 #include <osgGlyphs/GlyphState>
 
-ViewerScene::ViewerScene(const FrameSource& source, std::size_t numFrames, const ColorKey& key)
+ViewerScene::ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphs::ColorKey& key)
     : _source(source), _numFrames(numFrames), _key(key), _root(new osg::Group), _content(new osg::Group)
 {
     _root->addChild(_content.get());
@@ -75,7 +75,7 @@ osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, std::
                 (dataset->getNumFrames() == 1 ? "" : "s") + ", counted from 0";
         return nullptr;
     }
-    GlyphMapper mapper(options.mapping);
+    osgGlyphs::GlyphMapper mapper(options.mapping);
     if (!mapper.prepare(*dataset, options.frame, error))
         return nullptr;
     ViewerScene::FrameSource source = [dataset, mapper](std::size_t frame, std::string& frameError)
@@ -115,6 +115,6 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
         scene = createDefaultScene(options, error);
     if (!scene || !scene->setFrame(options.frame, error))
         return nullptr;
-    scene->setLit(options.lit);
+    scene->setLit(options.mapping.lit);
     return scene;
 }

@@ -3,8 +3,9 @@
 #ifndef OSGGLYPHVIEWER_VIEWERSCENE_H
 #define OSGGLYPHVIEWER_VIEWERSCENE_H 1
 
-#include "GlyphMapping.h"
 #include "ViewerOptions.h"
+
+#include <osgGlyphs/GlyphMapping>
 
 #include <osg/Camera>
 #include <osg/Group>
@@ -23,7 +24,7 @@ public:
     /** Makes the content of a frame, or returns nullptr with a one-line error. */
     typedef std::function<osg::ref_ptr<osg::Node>(std::size_t frame, std::string& error)> FrameSource;
 
-    ViewerScene(const FrameSource& source, std::size_t numFrames, const ColorKey& key);
+    ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphs::ColorKey& key);
 
     /** The scene graph: content and, once addLegend() is called, the legend. */
     osg::Group* getRoot() { return _root.get(); }
@@ -40,7 +41,7 @@ public:
     void setLit(bool lit);
     bool getLit() const { return _lit; }
 
-    const ColorKey& getColorKey() const { return _key; }
+    const osgGlyphs::ColorKey& getColorKey() const { return _key; }
 
     /** Adds the HUD of the colour key, laid out for the viewport of camera. */
     void addLegend(osg::Camera* camera, const osg::Vec4& background);
@@ -61,7 +62,7 @@ protected:
     std::size_t _numFrames;
     std::size_t _frame = 0;
     bool _lit = true;
-    ColorKey _key;
+    osgGlyphs::ColorKey _key;
     osg::ref_ptr<osg::Group> _root;
     osg::ref_ptr<osg::Group> _content;
     bool _hasHomeView = false;

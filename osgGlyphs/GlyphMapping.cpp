@@ -1,20 +1,21 @@
-#include "GlyphMapping.h"
+#include <osgGlyphs/GlyphMapping>
 
 #include "NeighbourDistance.h"
-#include "ViewerText.h"
 
 #include <osgGlyphs/Elements>
 
 #include <osg/BoundingBox>
+#include <osgDB/FileUtils>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <set>
+#include <sstream>
 
-using osgGlyphs::GlyphCloud;
-using osgGlyphs::PointData;
-using osgGlyphs::PointDataset;
+using namespace osgGlyphs;
 
 namespace
 {
@@ -40,6 +41,23 @@ const char* const VECTOR_CANDIDATES[][3] = {
 /** Colour columns, as PLY files name them. */
 const std::vector<std::string> RGB_COLUMNS = {"red", "green", "blue"};
 
+/** "a,b,c" */
+std::string joinColumns(const std::vector<std::string>& names, const char* separator = ",")
+{
+    std::string list;
+    for (const std::string& name : names)
+        list += (list.empty() ? "" : separator) + name;
+    return list;
+}
+
+/** 4 significant digits. */
+std::string formatNumber(float value)
+{
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.4g", value);
+    return text;
+}
+
 std::string listColumns(const PointData& data)
 {
     std::string list = "available columns:";
@@ -60,11 +78,11 @@ osg::Vec4ub toVec4ub(const osg::Vec4& color)
     return osg::Vec4ub(channel(color.r()), channel(color.g()), channel(color.b()), channel(color.a()));
 }
 
-const osgGlyphs::Element& elementOf(float value)
+const Element& elementOf(float value)
 {
     if (!std::isfinite(value) || value < 0.0f || value > 1000.0f)
-        return osgGlyphs::getUnknownElement();
-    return osgGlyphs::getElement(static_cast<unsigned int>(std::lround(value)));
+        return getUnknownElement();
+    return getElement(static_cast<unsigned int>(std::lround(value)));
 }
 
 /** The three columns of a triple, or false when one is missing. */
@@ -82,10 +100,11 @@ bool getTriple(const PointData& data, const std::vector<std::string>& names,
 
 }
 
-void applyGlyphStyle(GlyphCloud& cloud, const GlyphMappingOptions& options)
+void osgGlyphs::applyGlyphStyle(GlyphCloud& cloud, const GlyphMappingOptions& options)
 {
     cloud.setShape(options.shape);
     cloud.setTechnique(options.technique);
+    cloud.setLit(options.lit);
     if (options.colorMap.valid())
         cloud.setColorMap(options.colorMap.get());
     if (options.hasRange)
@@ -101,17 +120,17 @@ bool GlyphMapper::prepare(const PointDataset& dataset, std::size_t startFrame, s
         return false;
     }
     std::vector<osg::Vec3f> positions;
-    if (!osgGlyphs::getPositions(*data, _options.positionColumns, positions, error))
+    if (!getPositions(*data, _options.positionColumns, positions, error))
     {
-        error = (_options.positionColumns.empty() ? data->getSource() : "--position") + ": " + error;
+        error = (_options.positionColumns.empty() ? data->getSource() : option("position")) + ": " + error;
         return false;
     }
-    const bool vectorShape = _options.shape != osgGlyphs::GlyphShape::Sphere;
+    const bool vectorShape = _options.shape != GlyphShape::Sphere;
     if (!resolveVectors(*data, vectorShape, error) || !resolveColor(*data, error))
         return false;
     if (!_options.radiusColumn.empty() && !data->hasColumn(_options.radiusColumn))
     {
-        error = missingColumn("--radius-by", _options.radiusColumn, *data);
+        error = missingColumn(option("radius-by"), _options.radiusColumn, *data);
         return false;
     }
     computeSizes(*data, positions);
@@ -121,7 +140,7 @@ bool GlyphMapper::prepare(const PointDataset& dataset, std::size_t startFrame, s
     {
         _key.kind = ColorKey::Scalar;
         _key.title = _colorSource == ColorSource::Speed ? "speed" : _colorColumn;
-        _key.colorMap = _options.colorMap;
+        _key.colorMap = _options.colorMap.valid() ? _options.colorMap.get() : ColorMap::getBuiltin("viridis");
         if (!computeRange(dataset, error))
             return false;
     }
@@ -139,7 +158,7 @@ bool GlyphMapper::resolveVectors(const PointData& data, bool required, std::stri
         {
             if (!data.hasColumn(column))
             {
-                error = missingColumn("--vector", column, data);
+                error = missingColumn(option("vector"), column, data);
                 return false;
             }
         }
@@ -158,9 +177,8 @@ bool GlyphMapper::resolveVectors(const PointData& data, bool required, std::stri
     }
     if (required)
     {
-        error = std::string("--glyph ") + osgGlyphs::getShapeName(_options.shape) +
-                " needs vectors: no vx,vy,vz in " + data.getSource() + " (name the columns with --vector); " +
-                listColumns(data);
+        error = option("glyph") + " " + getShapeName(_options.shape) + " needs vectors: no vx,vy,vz in " +
+                data.getSource() + " (name the columns with " + option("vector") + "); " + listColumns(data);
         return false;
     }
     return true;
@@ -175,8 +193,8 @@ bool GlyphMapper::resolveColor(const PointData& data, std::string& error)
     {
         if (_vectorColumns.empty())
         {
-            error = "--color-by speed needs velocities: no vx,vy,vz in " + data.getSource() +
-                    " (name the columns with --vector); " + listColumns(data);
+            error = option("color-by") + " speed needs velocities: no vx,vy,vz in " + data.getSource() +
+                    " (name the columns with " + option("vector") + "); " + listColumns(data);
             return false;
         }
         _colorSource = ColorSource::Speed;
@@ -185,7 +203,7 @@ bool GlyphMapper::resolveColor(const PointData& data, std::string& error)
     {
         if (!data.hasColumn(by))
         {
-            error = missingColumn("--color-by", by, data);
+            error = missingColumn(option("color-by"), by, data);
             return false;
         }
         _colorSource = ColorSource::Column;
@@ -221,7 +239,7 @@ bool GlyphMapper::computeScalars(const PointData& data, std::vector<float>& scal
         const std::vector<float>* column = data.getColumn(_colorColumn);
         if (!column)
         {
-            error = missingColumn("--color-by", _colorColumn, data);
+            error = missingColumn(option("color-by"), _colorColumn, data);
             return false;
         }
         scalars = *column;
@@ -230,7 +248,7 @@ bool GlyphMapper::computeScalars(const PointData& data, std::vector<float>& scal
     const std::vector<float>* v[3];
     if (!getTriple(data, _vectorColumns, v))
     {
-        error = data.getSource() + ": speed needs the columns " + joinNames(_vectorColumns, ",") + "; " +
+        error = data.getSource() + ": speed needs the columns " + joinColumns(_vectorColumns) + "; " +
                 listColumns(data);
         return false;
     }
@@ -268,7 +286,7 @@ bool GlyphMapper::computeRange(const PointDataset& dataset, std::string& error)
     }
     if (!(low <= high))
     {
-        error = "--color-by " + _key.title + ": the data has no finite values to colour by";
+        error = option("color-by") + " " + _key.title + ": the data has no finite values to colour by";
         return false;
     }
     _key.min = low;
@@ -278,7 +296,7 @@ bool GlyphMapper::computeRange(const PointDataset& dataset, std::string& error)
 
 void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec3f>& positions)
 {
-    const bool vectorShape = _options.shape != osgGlyphs::GlyphShape::Sphere;
+    const bool vectorShape = _options.shape != GlyphShape::Sphere;
     const std::size_t n = data.getNumPoints();
     _radiusColumn = _options.radiusColumn;
     _elementRadii = _radiusColumn.empty() && _options.radius <= 0.0f && data.hasColumn("element");
@@ -312,7 +330,7 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
             box.expandBy(p);
         }
         const float diagonal = box.valid() ? (box._max - box._min).length() : 0.0f;
-        const float spacing = estimateNeighbourDistance(positions);
+        const float spacing = detail::estimateNeighbourDistance(positions);
         _radius = std::max(spacing * (vectorShape ? 0.2f : 0.4f), diagonal / (vectorShape ? 500.0f : 250.0f));
         typical = _radius = _radius > 0.0f ? _radius : 0.5f;
     }
@@ -382,7 +400,7 @@ void GlyphMapper::buildCategoryKey(const PointData& data)
 osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::string& error) const
 {
     std::vector<osg::Vec3f> positions;
-    if (!osgGlyphs::getPositions(data, _options.positionColumns, positions, error))
+    if (!getPositions(data, _options.positionColumns, positions, error))
     {
         error = data.getSource() + ": " + error;
         return nullptr;
@@ -398,7 +416,7 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
         const std::vector<float>* column = data.getColumn(_elementRadii ? "element" : _radiusColumn);
         if (!column)
         {
-            error = missingColumn("--radius-by", _radiusColumn, data);
+            error = missingColumn(option("radius-by"), _radiusColumn, data);
             return nullptr;
         }
         osg::ref_ptr<osg::FloatArray> radii = new osg::FloatArray(n);
@@ -410,11 +428,11 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
         cloud->setRadius(_radius);
 
     const std::vector<float>* v[3];
-    if (_options.shape != osgGlyphs::GlyphShape::Sphere)
+    if (_options.shape != GlyphShape::Sphere)
     {
         if (!getTriple(data, _vectorColumns, v))
         {
-            error = missingColumn("--vector", joinNames(_vectorColumns, ","), data);
+            error = missingColumn(option("vector"), joinColumns(_vectorColumns), data);
             return nullptr;
         }
         osg::ref_ptr<osg::Vec3Array> vectors = new osg::Vec3Array(n);
@@ -467,15 +485,15 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
 
 std::string GlyphMapper::describe() const
 {
-    std::string text = std::string(osgGlyphs::getShapeName(_options.shape)) + "s";
+    std::string text = std::string(getShapeName(_options.shape)) + "s";
     switch (_colorSource)
     {
     case ColorSource::Column:
     case ColorSource::Speed:
         text += " coloured by " + _key.title +
-                (_colorSource == ColorSource::Speed ? " |" + joinNames(_vectorColumns, ",") + "|" : "") +
-                " (" + _key.colorMap->getName() + ", " + formatValue(_key.min) + " .. " +
-                formatValue(_key.max) + ")";
+                (_colorSource == ColorSource::Speed ? " |" + joinColumns(_vectorColumns) + "|" : "") + " (" +
+                _key.colorMap->getName() + ", " + formatNumber(_key.min) + " .. " + formatNumber(_key.max) +
+                ")";
         break;
     case ColorSource::Element:
         text += " coloured by element";
@@ -490,12 +508,157 @@ std::string GlyphMapper::describe() const
         text += " in one colour";
     }
     if (!_radiusColumn.empty())
-        text += ", radius " + formatValue(_radius) + " x " + _radiusColumn;
+        text += ", radius " + formatNumber(_radius) + " x " + _radiusColumn;
     else if (_elementRadii)
         text += ", covalent radii";
     else
-        text += ", radius " + formatValue(_radius);
-    if (_options.shape != osgGlyphs::GlyphShape::Sphere)
-        text += ", vectors " + joinNames(_vectorColumns, ",") + " x " + formatValue(_lengthScale);
+        text += ", radius " + formatNumber(_radius);
+    if (_options.shape != GlyphShape::Sphere)
+        text += ", vectors " + joinColumns(_vectorColumns) + " x " + formatNumber(_lengthScale);
     return text;
+}
+
+std::string GlyphMapper::option(const char* name) const
+{
+    return _options.optionPrefix + name;
+}
+
+namespace
+{
+
+/** Splits "a,b,c" into exactly count non-empty parts. */
+bool splitList(const std::string& text, std::size_t count, std::vector<std::string>& parts)
+{
+    parts.clear();
+    std::istringstream stream(text);
+    std::string part;
+    while (std::getline(stream, part, ','))
+        parts.push_back(part);
+    if (!text.empty() && text.back() == ',')
+        parts.push_back(std::string());
+    return parts.size() == count &&
+           std::none_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); });
+}
+
+bool parseNumber(const std::string& text, float& value)
+{
+    char* end = nullptr;
+    value = std::strtof(text.c_str(), &end);
+    return !text.empty() && end == text.c_str() + text.size() && std::isfinite(value);
+}
+
+bool parseSwitch(const std::string& text, bool& value)
+{
+    if (text == "on" || text == "true" || text == "1")
+        value = true;
+    else if (text == "off" || text == "false" || text == "0")
+        value = false;
+    else
+        return false;
+    return true;
+}
+
+bool resolveColorMap(const std::string& name, osg::ref_ptr<ColorMap>& colorMap, std::string& error)
+{
+    colorMap = ColorMap::getBuiltin(name);
+    if (colorMap.valid())
+        return true;
+    if (!osgDB::fileExists(name))
+    {
+        error = "'" + name + "': neither a built-in colour map (" +
+                joinColumns(ColorMap::getBuiltinNames(), ", ") + ") nor a file";
+        return false;
+    }
+    colorMap = ColorMap::readFile(name, error);
+    return colorMap.valid();
+}
+
+std::vector<std::string> getTechniqueNames()
+{
+    std::vector<std::string> names;
+    for (GlyphTechnique technique : getTechniques())
+        names.push_back(getTechniqueName(technique));
+    return names;
+}
+
+/** Sets the option; false with error saying what the value should be (without the option's name). */
+bool setOption(GlyphMappingOptions& options, const std::string& name, const std::string& value,
+               std::string& error)
+{
+    if (name == "position" || name == "vector")
+    {
+        std::vector<std::string>& columns =
+            name == "position" ? options.positionColumns : options.vectorColumns;
+        if (!splitList(value, 3, columns))
+            error = "'" + value + "': give 3 column names separated by commas";
+    }
+    else if (name == "radius" || name == "length-scale")
+    {
+        float& number = name == "radius" ? options.radius : options.lengthScale;
+        if (!parseNumber(value, number) || !(number > 0.0f))
+            error = "'" + value + "': must be a positive number";
+    }
+    else if (name == "radius-by" || name == "color-by" || name == "color")
+    {
+        (name == "radius-by" ? options.radiusColumn : options.colorBy) = value;
+        if (value.empty())
+            error = "needs a column name";
+    }
+    else if (name == "colormap")
+        resolveColorMap(value, options.colorMap, error);
+    else if (name == "range")
+    {
+        std::vector<std::string> bounds;
+        options.hasRange = splitList(value, 2, bounds) && parseNumber(bounds[0], options.rangeMin) &&
+                           parseNumber(bounds[1], options.rangeMax);
+        if (!options.hasRange)
+            error = "'" + value + "': give the minimum and the maximum";
+        else if (!(options.rangeMin < options.rangeMax))
+            error = "'" + value + "': the minimum must be less than the maximum";
+    }
+    else if (name == "glyph")
+    {
+        if (!parseShape(value, options.shape))
+            error = "'" + value + "': unknown shape (sphere, cone, arrow, cylinder)";
+    }
+    else if (name == "technique")
+    {
+        if (!parseTechnique(value, options.technique))
+            error = "'" + value + "': unknown technique (default, " + joinColumns(getTechniqueNames(), ", ") +
+                    ")";
+    }
+    else if (name == "lit")
+    {
+        if (!parseSwitch(value, options.lit))
+            error = "'" + value + "': on or off";
+    }
+    else if (name == "unlit")
+    {
+        options.lit = false;
+        if (!value.empty())
+            error = "takes no value";
+    }
+    else
+        error = "unknown option (" + joinColumns(getGlyphMappingOptionNames(), ", ") + ")";
+    return error.empty();
+}
+
+}
+
+const std::vector<std::string>& osgGlyphs::getGlyphMappingOptionNames()
+{
+    static const std::vector<std::string> names = {
+        "position", "vector",       "radius", "radius-by", "color-by", "color", "colormap",
+        "range",    "length-scale", "glyph",  "technique", "lit",      "unlit"};
+    return names;
+}
+
+bool osgGlyphs::setGlyphMappingOption(GlyphMappingOptions& options, const std::string& name,
+                                      const std::string& value, std::string& error)
+{
+    std::string what;
+    if (setOption(options, name, value, what))
+        return true;
+    error = options.optionPrefix + name + (what[0] == '\'' ? " " : ": ") + what;
+    return false;
 }

@@ -119,7 +119,8 @@ private:
 
 }
 
-float estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions, unsigned int maxSamples)
+float osgGlyphs::detail::estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions,
+                                                   unsigned int maxSamples)
 {
     std::vector<uint32_t> finite;
     finite.reserve(positions.size());
