@@ -1,6 +1,8 @@
 # Installs the built osgGlyphs into a scratch prefix, then builds and runs the consumer
-# against it twice: through find_package(osgGlyphs) and through pkg-config.
-# Variables: BUILD_DIR, SOURCE_DIR, WORK_DIR, CXX, CXX_FLAGS.
+# against it: through find_package(osgGlyphs), through pkg-config, and once more with the
+# installed shader files replacing the embedded ones. Every run renders the consumer's scene
+# and compares it with BASELINE; OSGGLYPHS_BLESS=1 makes the first run rewrite BASELINE.
+# Variables: BUILD_DIR, SOURCE_DIR, WORK_DIR, BASELINE, CXX, CXX_FLAGS.
 
 function(run)
     execute_process(COMMAND ${ARGN} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
@@ -11,14 +13,42 @@ function(run)
     endif()
 endfunction()
 
+# The program must load libosgGlyphs from the prefix, not from the build tree.
+function(check_loads_installed_library program)
+    execute_process(COMMAND ldd "${program}" OUTPUT_VARIABLE output RESULT_VARIABLE result)
+    string(REGEX MATCH "libosgGlyphs[^\n]*=> ([^ \n]*)" line "${output}")
+    set(library "${CMAKE_MATCH_1}")
+    if(NOT result EQUAL 0 OR library STREQUAL "")
+        message(FATAL_ERROR "ldd ${program} does not show libosgGlyphs:\n${output}")
+    endif()
+    file(REAL_PATH "${library}" library)
+    file(REAL_PATH "${prefix}" real_prefix)
+    string(FIND "${library}" "${real_prefix}/" at)
+    if(NOT at EQUAL 0)
+        message(FATAL_ERROR "${program} loads ${library}, not the installed library under ${real_prefix}")
+    endif()
+    message("${program} loads ${library}")
+endfunction()
+
+# Run the consumer (arguments: the program, the image it writes) without the blessing after the first run.
+function(run_consumer program image)
+    check_loads_installed_library("${program}")
+    run("${program}" "${BASELINE}" "${WORK_DIR}/${image}")
+    unset(ENV{OSGGLYPHS_BLESS})
+endfunction()
+
 set(prefix "${WORK_DIR}/prefix")
 file(REMOVE_RECURSE "${WORK_DIR}")
+# Nothing from the build tree: no shader or plugin paths that ctest or the caller set.
+unset(ENV{OSG_FILE_PATH})
+unset(ENV{OSG_LIBRARY_PATH})
+unset(ENV{LD_LIBRARY_PATH})
 run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 
 run(${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${WORK_DIR}/cmake-build" -DCMAKE_PREFIX_PATH=${prefix}
     "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" -DCMAKE_CXX_COMPILER=${CXX})
 run(${CMAKE_COMMAND} --build "${WORK_DIR}/cmake-build")
-run("${WORK_DIR}/cmake-build/consumer")
+run_consumer("${WORK_DIR}/cmake-build/consumer" consumer-cmake.png)
 
 file(GLOB pc_dirs "${prefix}/lib*/pkgconfig" "${prefix}/lib/*/pkgconfig")
 set(ENV{PKG_CONFIG_PATH} "${pc_dirs}")
@@ -33,4 +63,21 @@ run(${CXX} -std=c++17 ${cxx_flags} "${SOURCE_DIR}/consumer.cpp" ${flags} -o "${W
 string(REPLACE ";" ":" library_path "${pc_dirs}")
 get_filename_component(libdir "${library_path}" DIRECTORY)
 set(ENV{LD_LIBRARY_PATH} "${libdir}")
-run("${WORK_DIR}/consumer-pkgconfig")
+run_consumer("${WORK_DIR}/consumer-pkgconfig" consumer-pkgconfig.png)
+
+# The installed shaders replace the embedded copies (the README's OSG_FILE_PATH recipe): the
+# library must say it uses them, and render the same image.
+set(shader_dir "${prefix}/share/osgGlyphs/shaders")
+set(ENV{OSG_FILE_PATH} "${shader_dir}")
+set(ENV{OSG_NOTIFY_LEVEL} INFO)
+execute_process(COMMAND "${WORK_DIR}/consumer-pkgconfig" "${BASELINE}" "${WORK_DIR}/consumer-installed-shaders.png"
+    RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
+string(REGEX MATCHALL "[^\n]*(osgGlyphs: using|consumer|  ok  |  FAIL  )[^\n]*" lines "${output}")
+list(JOIN lines "\n" lines)
+message("OSG_FILE_PATH=${shader_dir}:\n${lines}")
+if(NOT result EQUAL 0)
+    message(FATAL_ERROR "failed (${result}) with the installed shaders:\n${output}")
+endif()
+if(NOT output MATCHES "osgGlyphs: using ${shader_dir}/osgGlyphs/")
+    message(FATAL_ERROR "the consumer did not read its shaders from ${shader_dir}")
+endif()

@@ -9,6 +9,9 @@
 //       A and B have the same size and at least MIN_FRACTION of their pixels differ.
 //   osgglyphviewer_image_check coverage A.png MIN_FRACTION
 //       at least MIN_FRACTION of the pixels differ from the colour of the bottom-left corner.
+//   osgglyphviewer_image_check match A.png BASELINE.png CHANNEL MAX_FRACTION
+//       A and BASELINE have the same size and at most MAX_FRACTION of the pixels differ by more
+//       than CHANNEL levels (0..255) in a colour channel.
 // Prints what it measured; exits 0 when the check holds, 1 when not, 2 on bad arguments.
 
 #include <osgGlyphs/DepthImage>
@@ -16,6 +19,7 @@
 #include <osg/Vec3d>
 #include <osgDB/ReadFile>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -157,6 +161,41 @@ int checkCoverage(int argc, char** argv)
     return fraction >= std::atof(argv[3]) ? 0 : 1;
 }
 
+int checkMatch(int argc, char** argv)
+{
+    if (argc != 6)
+        return 2;
+    osg::ref_ptr<osg::Image> a = readImage(argv[2]), b = readImage(argv[3]);
+    if (!a || !b)
+        return 1;
+    if (a->s() != b->s() || a->t() != b->t())
+    {
+        std::cerr << argv[2] << " is " << a->s() << "x" << a->t() << ", " << argv[3] << " " << b->s() << "x"
+                  << b->t() << std::endl;
+        return 1;
+    }
+    const float tolerance = std::atof(argv[4]) / 255.0f;
+    int count = 0;
+    float worst = 0.0f;
+    for (int y = 0; y < a->t(); ++y)
+    {
+        for (int x = 0; x < a->s(); ++x)
+        {
+            const osg::Vec4 ca = a->getColor(x, y), cb = b->getColor(x, y);
+            float pixelWorst = 0.0f;
+            for (int c = 0; c < 3; ++c)
+                pixelWorst = std::max(pixelWorst, std::fabs(ca[c] - cb[c]));
+            worst = std::max(worst, pixelWorst);
+            count += pixelWorst > tolerance ? 1 : 0;
+        }
+    }
+    const double fraction = static_cast<double>(count) / (a->s() * a->t());
+    std::cout << "pixels differing from " << argv[3] << " by more than " << argv[4] << ": " << count << " ("
+              << fraction << ", at most " << argv[5] << "); largest difference " << worst * 255.0f
+              << std::endl;
+    return fraction <= std::atof(argv[5]) ? 0 : 1;
+}
+
 }
 
 int main(int argc, char** argv)
@@ -165,6 +204,7 @@ int main(int argc, char** argv)
     const int result = command == "depth"      ? checkDepth(argc, argv)
                        : command == "differ"   ? checkDiffer(argc, argv)
                        : command == "coverage" ? checkCoverage(argc, argv)
+                       : command == "match"    ? checkMatch(argc, argv)
                                                : 2;
     if (result == 2)
         std::cerr << "usage: see the comment at the top of tests/viewer/ViewerImageCheck.cpp" << std::endl;
