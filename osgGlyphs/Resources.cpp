@@ -1,14 +1,48 @@
 #include "Resources.h"
 
 #include <osg/Notify>
+#include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
 #include <osgDB/fstream>
 
+#include <dlfcn.h>
+
 #include <sstream>
+
+namespace
+{
+
+/** <prefix>/share/osgGlyphs/shaders of an installed library, found from where the library was
+ * loaded; empty when it was not loaded from an installed tree (a build tree has no such folder). */
+const std::string& getInstalledShaderDir()
+{
+    static const std::string dir = []
+    {
+        Dl_info info;
+        if (!dladdr(reinterpret_cast<const void*>(&getInstalledShaderDir), &info) || !info.dli_fname)
+            return std::string();
+        const std::string candidate =
+            osgDB::getFilePath(osgDB::getRealPath(info.dli_fname)) + "/" + OSGGLYPHS_SHADER_DIR_FROM_LIBRARY;
+        return osgDB::fileType(candidate) == osgDB::DIRECTORY ? osgDB::getRealPath(candidate) : std::string();
+    }();
+    return dir;
+}
+
+/** A file of that name on OSG's data path, else in the installed shader folder. */
+std::string findResourceFile(const std::string& name)
+{
+    const std::string path = osgDB::findDataFile(name);
+    if (!path.empty() || getInstalledShaderDir().empty())
+        return path;
+    const std::string installed = getInstalledShaderDir() + "/" + name;
+    return osgDB::fileExists(installed) ? installed : std::string();
+}
+
+}
 
 std::string osgGlyphs::detail::readResource(const std::string& name)
 {
-    const std::string path = osgDB::findDataFile(name);
+    const std::string path = findResourceFile(name);
     if (!path.empty())
     {
         osgDB::ifstream file(path.c_str());

@@ -15,8 +15,9 @@ const char* getEmbeddedShader(const std::string& name);
 const char* getEmbeddedColorMap(const std::string& name);
 
 /** The text of a resource such as "osgGlyphs/glyph.frag" or "osgGlyphs/colormaps/viridis.txt":
- * a file of that name on OSG's data path (OSG_FILE_PATH) if there is one, else the embedded
- * copy, else an empty string. */
+ * a file of that name on OSG's data path (OSG_FILE_PATH) if there is one, else the installed
+ * copy (<prefix>/share/osgGlyphs/shaders/<name>, next to an installed library), else the
+ * embedded copy, else an empty string. */
 std::string readResource(const std::string& name);
 
 }

@@ -96,7 +96,11 @@ int main(int argc, char** argv)
     std::string output;
     int width = 800, height = 600;
     arguments.read("--output", output);
-    arguments.read("--size", width, height);
+    if (arguments.read("--size", width, height) && (width <= 0 || height <= 0))
+    {
+        std::cerr << "osgglyphexample: --size needs a positive width and height" << std::endl;
+        return 1;
+    }
 
     osg::ref_ptr<osg::Node> scene = createScene();
     if (!output.empty())

@@ -65,16 +65,15 @@ get_filename_component(libdir "${library_path}" DIRECTORY)
 set(ENV{LD_LIBRARY_PATH} "${libdir}")
 run_consumer("${WORK_DIR}/consumer-pkgconfig" consumer-pkgconfig.png)
 
-# The installed shaders replace the embedded copies (the README's OSG_FILE_PATH recipe): the
-# library must say it uses them, and render the same image.
-set(shader_dir "${prefix}/share/osgGlyphs/shaders")
-set(ENV{OSG_FILE_PATH} "${shader_dir}")
+# The installed library reads the installed shaders (editable in place) before its embedded
+# copies: it must say it uses them, and render the same image.
+file(REAL_PATH "${prefix}/share/osgGlyphs/shaders" shader_dir)
 set(ENV{OSG_NOTIFY_LEVEL} INFO)
 execute_process(COMMAND "${WORK_DIR}/consumer-pkgconfig" "${BASELINE}" "${WORK_DIR}/consumer-installed-shaders.png"
     RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
 string(REGEX MATCHALL "[^\n]*(osgGlyphs: using|consumer|  ok  |  FAIL  )[^\n]*" lines "${output}")
 list(JOIN lines "\n" lines)
-message("OSG_FILE_PATH=${shader_dir}:\n${lines}")
+message("installed shaders in ${shader_dir}:\n${lines}")
 if(NOT result EQUAL 0)
     message(FATAL_ERROR "failed (${result}) with the installed shaders:\n${output}")
 endif()
