@@ -5,8 +5,11 @@
 
 #include <osgGlyphs/GlyphCloud>
 
+#include <osg/MatrixTransform>
+#include <osg/Sequence>
 #include <osg/ShapeDrawable>
 #include <osgDB/FileUtils>
+#include <osgUtil/Optimizer>
 
 #include <cmath>
 #include <fstream>
@@ -313,4 +316,41 @@ TEST_F(GlyphCloudData, LitSceneMatchesBaseline)
     tolerance.depth = 1e-6f;
     tolerance.depthPixelBudget = 8;
     EXPECT_TRUE(matchesBaseline(frame, "glyphs_lit_scene", tolerance));
+}
+
+TEST_F(GlyphCloudData, TheOptimizerLeavesCloudsAndTheirTransformsAlone)
+{
+    // osgconv's default optimisation merged the clouds of a sequence into one broken cloud, and
+    // would bake a static transform into positions but not into radii.
+    auto createCloud = [](const osg::Vec3& position)
+    {
+        osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+        cloud->setPositions(new osg::Vec3Array(1, &position));
+        cloud->setRadius(0.25f);
+        return cloud;
+    };
+    osg::ref_ptr<osg::Sequence> frames = new osg::Sequence;
+    for (float x : {-1.0f, 0.0f, 1.0f})
+        frames->addChild(createCloud(osg::Vec3(x, 0.0f, 0.0f)).get());
+    osg::ref_ptr<GlyphCloud> scaledCloud = createCloud(osg::Vec3(0.0f, 0.0f, 1.0f));
+    osg::ref_ptr<osg::MatrixTransform> scaled = new osg::MatrixTransform(osg::Matrix::scale(2.0, 2.0, 2.0));
+    scaled->setDataVariance(osg::Object::STATIC);
+    scaled->addChild(scaledCloud.get());
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->addChild(frames.get());
+    root->addChild(scaled.get());
+
+    osgUtil::Optimizer optimizer;
+    optimizer.optimize(root.get(), osgUtil::Optimizer::ALL_OPTIMIZATIONS);
+
+    ASSERT_EQ(frames->getNumChildren(), 3u);
+    for (unsigned int i = 0; i < 3; ++i)
+    {
+        GlyphCloud* cloud = dynamic_cast<GlyphCloud*>(frames->getChild(i));
+        ASSERT_NE(cloud, nullptr);
+        EXPECT_EQ(cloud->getPositions()->size(), 1u);
+    }
+    EXPECT_EQ((*scaledCloud->getPositions())[0], osg::Vec3(0.0f, 0.0f, 1.0f)); // not transformed
+    ASSERT_EQ(scaledCloud->getNumParents(), 1u);
+    EXPECT_NE(dynamic_cast<osg::MatrixTransform*>(scaledCloud->getParent(0)), nullptr);
 }
