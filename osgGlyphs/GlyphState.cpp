@@ -1,17 +1,14 @@
 #include <osgGlyphs/GlyphState>
 
 #include "ShaderSource.h"
+#include "SpriteTextures.h"
 
 #include <osg/ContextData>
 #include <osg/GLObjects>
 #include <osg/Point>
 #include <osg/PointSprite>
-#include <osg/Texture2D>
 #include <osg/Uniform>
 #include <osg/VertexAttribDivisor>
-
-#include <algorithm>
-#include <cmath>
 
 using namespace osgGlyphs;
 
@@ -67,36 +64,6 @@ const char* techniqueDefine(GlyphTechnique technique)
     default:
         return nullptr;
     }
-}
-
-/** texture-blend's two textures: a circle mask and a grey sphere lit by a headlight. */
-osg::ref_ptr<osg::Texture2D> createSpriteTexture(bool lighting)
-{
-    const int size = 256;
-    osg::ref_ptr<osg::Image> image = new osg::Image;
-    image->allocateImage(size, size, 1, GL_RGBA, GL_UNSIGNED_BYTE);
-    for (int t = 0; t < size; ++t)
-    {
-        for (int s = 0; s < size; ++s)
-        {
-            const float x = (s + 0.5f) / size * 2.0f - 1.0f, y = 1.0f - (t + 0.5f) / size * 2.0f;
-            const float r2 = x * x + y * y;
-            const float nz = std::sqrt(std::max(1.0f - r2, 0.0f));
-            // Blinn-Phong under a headlight, with the default material of GlyphCloud.
-            const float halfway = std::max((nz + 1.0f) / std::sqrt(2.0f * (1.0f + nz)), 0.0f);
-            const float shade = std::min(0.2f + nz + 0.4f * std::pow(halfway, 48.0f), 1.0f);
-            unsigned char* texel = image->data(s, t);
-            const auto grey = static_cast<unsigned char>(255.0f * (lighting ? shade : 1.0f));
-            texel[0] = texel[1] = texel[2] = grey;
-            texel[3] = r2 <= 1.0f ? 255 : 0;
-        }
-    }
-    osg::ref_ptr<osg::Texture2D> texture = new osg::Texture2D(image.get());
-    texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR_MIPMAP_LINEAR);
-    texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
-    texture->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
-    texture->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
-    return texture;
 }
 
 /** Lives in a context's osg::ContextData: when OSG deletes or discards that context's GL
@@ -291,8 +258,8 @@ osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
     }
     if (variant.technique == GlyphTechnique::TextureBlend)
     {
-        stateSet->setTextureAttribute(MASK_UNIT, createSpriteTexture(false));
-        stateSet->setTextureAttribute(LIGHTING_UNIT, createSpriteTexture(true));
+        stateSet->setTextureAttribute(MASK_UNIT, detail::createSpriteTexture(false));
+        stateSet->setTextureAttribute(LIGHTING_UNIT, detail::createSpriteTexture(true));
         stateSet->addUniform(new osg::Uniform("osgGlyphs_maskTexture", static_cast<int>(MASK_UNIT)));
         stateSet->addUniform(new osg::Uniform("osgGlyphs_lightingTexture", static_cast<int>(LIGHTING_UNIT)));
     }
