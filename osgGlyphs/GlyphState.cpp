@@ -58,12 +58,20 @@ const char* techniqueDefine(GlyphTechnique technique)
     case GlyphTechnique::Polygons:
         return "OSGGLYPHS_TECHNIQUE_POLYGONS";
     case GlyphTechnique::TextureBlend:
-        return "OSGGLYPHS_TECHNIQUE_TEXTURE";
+        return "OSGGLYPHS_TECHNIQUE_TEXTURE_BLEND";
+    case GlyphTechnique::TextureMulti:
+        return "OSGGLYPHS_TECHNIQUE_TEXTURE_MULTI";
     case GlyphTechnique::PointsFloor:
         return "OSGGLYPHS_TECHNIQUE_POINTS";
     default:
         return nullptr;
     }
+}
+
+/** The colour map of a Scalar variant: its own or the default. */
+const ColorMap* getColorMap(const GlyphVariant& variant)
+{
+    return variant.colorMap ? variant.colorMap : ColorMap::getBuiltin("viridis");
 }
 
 /** Lives in a context's osg::ContextData: when OSG deletes or discards that context's GL
@@ -150,9 +158,8 @@ bool osgGlyphs::isTechniqueSupported(GlyphTechnique technique, GlyphShape shape)
     case GlyphTechnique::PaperQuad:
         return shape == GlyphShape::Sphere || shape == GlyphShape::Cone;
     case GlyphTechnique::TextureBlend:
-        return shape == GlyphShape::Sphere; // the paper's textures are of spheres
     case GlyphTechnique::TextureMulti:
-        return false;
+        return shape == GlyphShape::Sphere; // the paper's textures are of spheres
     default:
         return true;
     }
@@ -250,6 +257,7 @@ osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
         break;
     case GlyphTechnique::PointSprite:
     case GlyphTechnique::TextureBlend:
+    case GlyphTechnique::TextureMulti:
         stateSet->setMode(GL_VERTEX_PROGRAM_POINT_SIZE, osg::StateAttribute::ON);
         stateSet->setTextureAttributeAndModes(MASK_UNIT, new osg::PointSprite, osg::StateAttribute::ON);
         break;
@@ -263,6 +271,11 @@ osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
         stateSet->addUniform(new osg::Uniform("osgGlyphs_maskTexture", static_cast<int>(MASK_UNIT)));
         stateSet->addUniform(new osg::Uniform("osgGlyphs_lightingTexture", static_cast<int>(LIGHTING_UNIT)));
     }
+    if (variant.technique == GlyphTechnique::TextureMulti)
+    {
+        stateSet->setTextureAttribute(LIT_SPRITES_UNIT, getLitSpritesLocked(variant));
+        stateSet->addUniform(new osg::Uniform("osgGlyphs_litSprites", static_cast<int>(LIT_SPRITES_UNIT)));
+    }
     if (variant.lit)
         stateSet->setDefine(GLYPH_LIT_DEFINE);
     if (variant.colorMode == GlyphColorMode::RGBA)
@@ -270,11 +283,20 @@ osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
     if (variant.colorMode == GlyphColorMode::Scalar)
     {
         stateSet->setDefine(COLOR_SCALAR_DEFINE);
-        const ColorMap* colorMap = variant.colorMap ? variant.colorMap : ColorMap::getBuiltin("viridis");
-        stateSet->setTextureAttribute(COLORMAP_UNIT, colorMap->getTexture());
+        stateSet->setTextureAttribute(COLORMAP_UNIT, getColorMap(variant)->getTexture());
         stateSet->addUniform(new osg::Uniform("osgGlyphs_colormap", static_cast<int>(COLORMAP_UNIT)));
     }
     return stateSet.get();
+}
+
+osg::Texture* GlyphStateSets::getLitSpritesLocked(const GlyphVariant& variant)
+{
+    const ColorMap* colorMap = variant.colorMode == GlyphColorMode::Scalar ? getColorMap(variant) : nullptr;
+    const osg::Vec4 color = variant.colorMode == GlyphColorMode::Uniform ? variant.color : osg::Vec4();
+    osg::ref_ptr<osg::Texture>& sprites = _litSprites[LitSpritesKey(variant.colorMode, colorMap, color)];
+    if (!sprites)
+        sprites = detail::createLitSprites(variant.colorMode, colorMap, color);
+    return sprites.get();
 }
 
 void GlyphStateSets::reloadShaders()

@@ -2,14 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace osgGlyphs;
+using namespace osgGlyphs::detail;
 
 namespace
 {
 
 /** Texels per side of every sprite texture (the paper's 256 px^2). */
 const int SPRITE_SIZE = 256;
+
+/** A layer's modified count under a context that has not loaded it. */
+const unsigned int NOT_LOADED = std::numeric_limits<unsigned int>::max();
 
 /** A texel of the sprite: the grey level of the sphere under it and whether it is inside the circle. */
 struct SpriteTexel
@@ -86,6 +91,25 @@ void setSpriteSampling(osg::Texture& texture)
     texture.setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
 }
 
+std::vector<osg::Vec4> sampleColorMap(const ColorMap& colorMap, unsigned int levels)
+{
+    std::vector<osg::Vec4> palette;
+    for (unsigned int i = 0; i < levels; ++i)
+        palette.push_back(colorMap.getColor(static_cast<float>(i) / static_cast<float>(levels - 1)));
+    return palette;
+}
+
+std::vector<osg::Vec4> createColorCube(unsigned int levels)
+{
+    std::vector<osg::Vec4> palette;
+    const float step = 1.0f / static_cast<float>(levels - 1);
+    for (unsigned int r = 0; r < levels; ++r)
+        for (unsigned int g = 0; g < levels; ++g)
+            for (unsigned int b = 0; b < levels; ++b)
+                palette.emplace_back(r * step, g * step, b * step, 1.0f);
+    return palette;
+}
+
 }
 
 osg::ref_ptr<osg::Texture2D> osgGlyphs::detail::createSpriteTexture(bool lighting)
@@ -95,4 +119,97 @@ osg::ref_ptr<osg::Texture2D> osgGlyphs::detail::createSpriteTexture(bool lightin
     osg::ref_ptr<osg::Texture2D> texture = new osg::Texture2D(image.get());
     setSpriteSampling(*texture);
     return texture;
+}
+
+LitSpriteArray::LitSpriteArray()
+{
+    setSpriteSampling(*this);
+}
+
+LitSpriteArray::LitSpriteArray(const std::vector<osg::Vec4>& palette)
+{
+    setSpriteSampling(*this);
+    allocateLayers(static_cast<unsigned int>(palette.size()));
+    fillLayers(palette);
+}
+
+LitSpriteArray::LitSpriteArray(const ColorMap* colorMap, unsigned int levels)
+    : _colorMap(colorMap), _levels(levels)
+{
+    setSpriteSampling(*this);
+    allocateLayers(levels);
+    fillFromColorMap();
+}
+
+LitSpriteArray::LitSpriteArray(const LitSpriteArray& other, const osg::CopyOp& copyop)
+    : osg::Texture2DArray(other, copyop), _colorMap(other._colorMap), _levels(other._levels),
+      _colorMapModifiedCount(other._colorMapModifiedCount)
+{
+    for (int layer = 0; layer < getTextureDepth(); ++layer)
+        _layers.push_back(getImage(layer));
+}
+
+void LitSpriteArray::allocateLayers(unsigned int count)
+{
+    setTextureSize(SPRITE_SIZE, SPRITE_SIZE, static_cast<int>(count));
+    _layers.clear();
+    for (unsigned int layer = 0; layer < count; ++layer)
+    {
+        _layers.push_back(allocateSpriteImage());
+        setImage(layer, _layers.back().get());
+    }
+}
+
+void LitSpriteArray::fillLayers(const std::vector<osg::Vec4>& palette) const
+{
+    for (size_t layer = 0; layer < _layers.size() && layer < palette.size(); ++layer)
+        fillSpriteImage(*_layers[layer], palette[layer], true);
+}
+
+void LitSpriteArray::fillFromColorMap() const
+{
+    _colorMapModifiedCount = _colorMap->getModifiedCount();
+    fillLayers(sampleColorMap(*_colorMap, _levels));
+}
+
+void LitSpriteArray::followColorMap() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    if (_colorMap->getModifiedCount() != _colorMapModifiedCount)
+        fillFromColorMap();
+}
+
+void LitSpriteArray::apply(osg::State& state) const
+{
+    if (_colorMap.valid())
+        followColorMap();
+    const unsigned int contextID = state.getContextID();
+    if (!getTextureObject(contextID))
+    {
+        // Texture2DArray remembers which layers it loaded under a context ID even after their
+        // texture object is released: a later context with that ID must load every layer.
+        for (unsigned int layer = 0; layer < _layers.size(); ++layer)
+            getModifiedCount(layer, contextID) = NOT_LOADED;
+    }
+    else if (isDirty(contextID))
+    {
+        // It reloads only the base level of a refilled layer: the mipmaps must follow.
+        _texMipmapGenerationDirtyList[contextID] = 1;
+    }
+    osg::Texture2DArray::apply(state);
+}
+
+osg::ref_ptr<LitSpriteArray> osgGlyphs::detail::createLitSprites(GlyphColorMode colorMode,
+                                                                 const ColorMap* colorMap,
+                                                                 const osg::Vec4& color)
+{
+    switch (colorMode)
+    {
+    case GlyphColorMode::Scalar:
+        return new LitSpriteArray(colorMap, TEXTURE_MULTI_COLORMAP_LEVELS);
+    case GlyphColorMode::RGBA:
+        return new LitSpriteArray(createColorCube(TEXTURE_MULTI_CUBE_LEVELS));
+    default:
+        return new LitSpriteArray(std::vector<osg::Vec4>{color});
+    }
 }
