@@ -132,6 +132,7 @@ osg::ref_ptr<ColorMap> ColorMap::readFile(const std::string& path, std::string& 
 void ColorMap::setColors(const std::vector<osg::Vec4>& colors)
 {
     _colors = colors;
+    ++_modifiedCount;
     if (_texture.valid())
         fillImage(*_texture->getImage());
 }

@@ -202,8 +202,8 @@ void GlyphCloud::setColor(const osg::Vec4& color)
         _colors = nullptr;
         _scalars = nullptr;
         dirtyGlyphs();
-        updateStateSet();
     }
+    updateStateSet(); // texture-multi's texture is of the one colour
 }
 
 void GlyphCloud::setColors(osg::Vec4ubArray* colors)
@@ -500,6 +500,8 @@ void GlyphCloud::updateStateSet()
     variant.colorMode = _colorMode;
     variant.lit = _lit;
     variant.colorMap = _colorMode == GlyphColorMode::Scalar ? _colorMap.get() : nullptr;
+    if (variant.technique == GlyphTechnique::TextureMulti && _colorMode == GlyphColorMode::Uniform)
+        variant.color = _color;
     setStateSet(GlyphStateSets::instance()->get(variant));
 }
 

@@ -1,17 +1,14 @@
 #include <osgGlyphs/GlyphState>
 
 #include "ShaderSource.h"
+#include "SpriteTextures.h"
 
 #include <osg/ContextData>
 #include <osg/GLObjects>
 #include <osg/Point>
 #include <osg/PointSprite>
-#include <osg/Texture2D>
 #include <osg/Uniform>
 #include <osg/VertexAttribDivisor>
-
-#include <algorithm>
-#include <cmath>
 
 using namespace osgGlyphs;
 
@@ -61,7 +58,9 @@ const char* techniqueDefine(GlyphTechnique technique)
     case GlyphTechnique::Polygons:
         return "OSGGLYPHS_TECHNIQUE_POLYGONS";
     case GlyphTechnique::TextureBlend:
-        return "OSGGLYPHS_TECHNIQUE_TEXTURE";
+        return "OSGGLYPHS_TECHNIQUE_TEXTURE_BLEND";
+    case GlyphTechnique::TextureMulti:
+        return "OSGGLYPHS_TECHNIQUE_TEXTURE_MULTI";
     case GlyphTechnique::PointsFloor:
         return "OSGGLYPHS_TECHNIQUE_POINTS";
     default:
@@ -69,34 +68,10 @@ const char* techniqueDefine(GlyphTechnique technique)
     }
 }
 
-/** texture-blend's two textures: a circle mask and a grey sphere lit by a headlight. */
-osg::ref_ptr<osg::Texture2D> createSpriteTexture(bool lighting)
+/** The colour map of a Scalar variant: its own or the default. */
+const ColorMap* getColorMap(const GlyphVariant& variant)
 {
-    const int size = 256;
-    osg::ref_ptr<osg::Image> image = new osg::Image;
-    image->allocateImage(size, size, 1, GL_RGBA, GL_UNSIGNED_BYTE);
-    for (int t = 0; t < size; ++t)
-    {
-        for (int s = 0; s < size; ++s)
-        {
-            const float x = (s + 0.5f) / size * 2.0f - 1.0f, y = 1.0f - (t + 0.5f) / size * 2.0f;
-            const float r2 = x * x + y * y;
-            const float nz = std::sqrt(std::max(1.0f - r2, 0.0f));
-            // Blinn-Phong under a headlight, with the default material of GlyphCloud.
-            const float halfway = std::max((nz + 1.0f) / std::sqrt(2.0f * (1.0f + nz)), 0.0f);
-            const float shade = std::min(0.2f + nz + 0.4f * std::pow(halfway, 48.0f), 1.0f);
-            unsigned char* texel = image->data(s, t);
-            const auto grey = static_cast<unsigned char>(255.0f * (lighting ? shade : 1.0f));
-            texel[0] = texel[1] = texel[2] = grey;
-            texel[3] = r2 <= 1.0f ? 255 : 0;
-        }
-    }
-    osg::ref_ptr<osg::Texture2D> texture = new osg::Texture2D(image.get());
-    texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR_MIPMAP_LINEAR);
-    texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
-    texture->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
-    texture->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
-    return texture;
+    return variant.colorMap ? variant.colorMap : ColorMap::getBuiltin("viridis");
 }
 
 /** Lives in a context's osg::ContextData: when OSG deletes or discards that context's GL
@@ -183,9 +158,8 @@ bool osgGlyphs::isTechniqueSupported(GlyphTechnique technique, GlyphShape shape)
     case GlyphTechnique::PaperQuad:
         return shape == GlyphShape::Sphere || shape == GlyphShape::Cone;
     case GlyphTechnique::TextureBlend:
-        return shape == GlyphShape::Sphere; // the paper's textures are of spheres
     case GlyphTechnique::TextureMulti:
-        return false;
+        return shape == GlyphShape::Sphere; // the paper's textures are of spheres
     default:
         return true;
     }
@@ -283,6 +257,7 @@ osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
         break;
     case GlyphTechnique::PointSprite:
     case GlyphTechnique::TextureBlend:
+    case GlyphTechnique::TextureMulti:
         stateSet->setMode(GL_VERTEX_PROGRAM_POINT_SIZE, osg::StateAttribute::ON);
         stateSet->setTextureAttributeAndModes(MASK_UNIT, new osg::PointSprite, osg::StateAttribute::ON);
         break;
@@ -291,10 +266,15 @@ osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
     }
     if (variant.technique == GlyphTechnique::TextureBlend)
     {
-        stateSet->setTextureAttribute(MASK_UNIT, createSpriteTexture(false));
-        stateSet->setTextureAttribute(LIGHTING_UNIT, createSpriteTexture(true));
+        stateSet->setTextureAttribute(MASK_UNIT, detail::createSpriteTexture(false));
+        stateSet->setTextureAttribute(LIGHTING_UNIT, detail::createSpriteTexture(true));
         stateSet->addUniform(new osg::Uniform("osgGlyphs_maskTexture", static_cast<int>(MASK_UNIT)));
         stateSet->addUniform(new osg::Uniform("osgGlyphs_lightingTexture", static_cast<int>(LIGHTING_UNIT)));
+    }
+    if (variant.technique == GlyphTechnique::TextureMulti)
+    {
+        stateSet->setTextureAttribute(LIT_SPRITES_UNIT, getLitSpritesLocked(variant));
+        stateSet->addUniform(new osg::Uniform("osgGlyphs_litSprites", static_cast<int>(LIT_SPRITES_UNIT)));
     }
     if (variant.lit)
         stateSet->setDefine(GLYPH_LIT_DEFINE);
@@ -303,11 +283,20 @@ osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
     if (variant.colorMode == GlyphColorMode::Scalar)
     {
         stateSet->setDefine(COLOR_SCALAR_DEFINE);
-        const ColorMap* colorMap = variant.colorMap ? variant.colorMap : ColorMap::getBuiltin("viridis");
-        stateSet->setTextureAttribute(COLORMAP_UNIT, colorMap->getTexture());
+        stateSet->setTextureAttribute(COLORMAP_UNIT, getColorMap(variant)->getTexture());
         stateSet->addUniform(new osg::Uniform("osgGlyphs_colormap", static_cast<int>(COLORMAP_UNIT)));
     }
     return stateSet.get();
+}
+
+osg::Texture* GlyphStateSets::getLitSpritesLocked(const GlyphVariant& variant)
+{
+    const ColorMap* colorMap = variant.colorMode == GlyphColorMode::Scalar ? getColorMap(variant) : nullptr;
+    const osg::Vec4 color = variant.colorMode == GlyphColorMode::Uniform ? variant.color : osg::Vec4();
+    osg::ref_ptr<osg::Texture>& sprites = _litSprites[LitSpritesKey(variant.colorMode, colorMap, color)];
+    if (!sprites)
+        sprites = detail::createLitSprites(variant.colorMode, colorMap, color);
+    return sprites.get();
 }
 
 void GlyphStateSets::reloadShaders()

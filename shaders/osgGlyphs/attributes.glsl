@@ -39,11 +39,19 @@ float glyphRadius()
     return decodeHalf(osgGlyphs_packed & 65535u) * osgGlyphs_radiusScale;
 }
 
+#ifdef OSGGLYPHS_COLOR_SCALAR
+/** Where the glyph's scalar falls on the colour map, in [0, 1]. */
+float colormapCoordinate()
+{
+    float quantised = float(osgGlyphs_packed >> 16u) * (1.0 / 65535.0);
+    return clamp(quantised * osgGlyphs_scalarToColormap.x + osgGlyphs_scalarToColormap.y, 0.0, 1.0);
+}
+#endif
+
 vec4 glyphColor()
 {
 #if defined(OSGGLYPHS_COLOR_SCALAR)
-    float quantised = float(osgGlyphs_packed >> 16u) * (1.0 / 65535.0);
-    float t = clamp(quantised * osgGlyphs_scalarToColormap.x + osgGlyphs_scalarToColormap.y, 0.0, 1.0);
+    float t = colormapCoordinate();
     // Texel i holds the map at i / (size - 1): sample between the first and last texel centres.
     float size = float(textureSize(osgGlyphs_colormap, 0));
     return texture(osgGlyphs_colormap, (t * (size - 1.0) + 0.5) / size);
@@ -53,6 +61,26 @@ vec4 glyphColor()
     return osgGlyphs_baseColor;
 #endif
 }
+
+#ifdef OSGGLYPHS_TECHNIQUE_TEXTURE_MULTI
+uniform sampler2DArray osgGlyphs_litSprites;
+
+/** The layer of texture-multi's sprites in the glyph's colour: the nearest of the colour map's
+  * evenly spaced levels, the nearest colour of the RGB cube (red slowest), or the one colour. */
+float litSpriteLayer()
+{
+    float layers = float(textureSize(osgGlyphs_litSprites, 0).z);
+#if defined(OSGGLYPHS_COLOR_SCALAR)
+    return floor(colormapCoordinate() * (layers - 1.0) + 0.5);
+#elif defined(OSGGLYPHS_COLOR_RGBA)
+    float levels = floor(pow(layers, 1.0 / 3.0) + 0.5);
+    vec3 level = floor(clamp(osgGlyphs_color.rgb, 0.0, 1.0) * (levels - 1.0) + 0.5);
+    return dot(level, vec3(levels * levels, levels, 1.0));
+#else
+    return 0.0;
+#endif
+}
+#endif
 
 vec4 glyphPosition()
 {

@@ -14,9 +14,12 @@
 #define OSGGLYPHS_VARYING in
 #include "varyings.glsl"
 
-#ifdef OSGGLYPHS_TECHNIQUE_TEXTURE
+#ifdef OSGGLYPHS_TECHNIQUE_TEXTURE_BLEND
 uniform sampler2D osgGlyphs_maskTexture;     // the circle
 uniform sampler2D osgGlyphs_lightingTexture; // a lit grey sphere
+#endif
+#ifdef OSGGLYPHS_TECHNIQUE_TEXTURE_MULTI
+uniform sampler2DArray osgGlyphs_litSprites; // a lit sphere per colour; alpha: the circle
 #endif
 
 out vec4 color;
@@ -94,10 +97,15 @@ void main()
 #elif defined(OSGGLYPHS_TECHNIQUE_POLYGONS)
     vec3 toEye = isOrthographic() ? vec3(0.0, 0.0, 1.0) : normalize(-fragFrame.xyz);
     color = vec4(shade(fragColor.rgb, fragFrame.xyz, normalize(fragLocal), toEye), fragColor.a);
-#elif defined(OSGGLYPHS_TECHNIQUE_TEXTURE)
+#elif defined(OSGGLYPHS_TECHNIQUE_TEXTURE_BLEND)
     if (texture(osgGlyphs_maskTexture, gl_PointCoord).a < 0.5)
         discard;
     color = vec4(fragColor.rgb * texture(osgGlyphs_lightingTexture, gl_PointCoord).rgb, fragColor.a);
+#elif defined(OSGGLYPHS_TECHNIQUE_TEXTURE_MULTI)
+    vec4 sprite = texture(osgGlyphs_litSprites, vec3(gl_PointCoord, fragLayer));
+    if (sprite.a < 0.5)
+        discard;
+    color = vec4(sprite.rgb, 1.0);
 #else // OSGGLYPHS_TECHNIQUE_POINTS
     color = fragColor;
 #endif

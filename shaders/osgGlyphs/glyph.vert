@@ -123,8 +123,11 @@ void main()
 #endif
     fragFrame = vec4(position, 0.0);
     gl_Position = gl_ProjectionMatrix * vec4(position, 1.0);
-#elif defined(OSGGLYPHS_TECHNIQUE_TEXTURE)
+#elif defined(OSGGLYPHS_TEXTURED_SPRITE)
     // A sprite the size of the glyph's projected bounding sphere, textured.
+#ifdef OSGGLYPHS_TECHNIQUE_TEXTURE_MULTI
+    fragLayer = litSpriteLayer();
+#endif
     float reach = glyph.sphere.w;
 #ifdef OSGGLYPHS_VECTOR_SHAPE
     reach = sqrt(0.25 * glyph.axis.w * glyph.axis.w + glyph.sphere.w * glyph.sphere.w);

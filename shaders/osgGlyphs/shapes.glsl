@@ -2,16 +2,22 @@
 
 #pragma import_defines(OSGGLYPHS_SHAPE_CONE, OSGGLYPHS_SHAPE_ARROW, OSGGLYPHS_SHAPE_CYLINDER)
 #pragma import_defines(OSGGLYPHS_TECHNIQUE_INSTANCED, OSGGLYPHS_TECHNIQUE_SPRITE, OSGGLYPHS_TECHNIQUE_PAPER)
-#pragma import_defines(OSGGLYPHS_TECHNIQUE_POLYGONS, OSGGLYPHS_TECHNIQUE_TEXTURE, OSGGLYPHS_TECHNIQUE_POINTS)
+#pragma import_defines(OSGGLYPHS_TECHNIQUE_POLYGONS, OSGGLYPHS_TECHNIQUE_TEXTURE_BLEND, OSGGLYPHS_TECHNIQUE_TEXTURE_MULTI)
+#pragma import_defines(OSGGLYPHS_TECHNIQUE_POINTS)
 
 #if defined(OSGGLYPHS_SHAPE_CONE) || defined(OSGGLYPHS_SHAPE_ARROW) || defined(OSGGLYPHS_SHAPE_CYLINDER)
 #define OSGGLYPHS_VECTOR_SHAPE 1
 #endif
 
+// The paper's texture techniques: a textured point sprite the size of the projected bounding sphere.
+#if defined(OSGGLYPHS_TECHNIQUE_TEXTURE_BLEND) || defined(OSGGLYPHS_TECHNIQUE_TEXTURE_MULTI)
+#define OSGGLYPHS_TEXTURED_SPRITE 1
+#endif
+
 // The exact impostor: bounded by a geometry shader (no technique define), an instanced quad
 // or a point sprite, and ray-cast in the fragment shader.
 #if !defined(OSGGLYPHS_TECHNIQUE_PAPER) && !defined(OSGGLYPHS_TECHNIQUE_POLYGONS) &&                          \
-    !defined(OSGGLYPHS_TECHNIQUE_TEXTURE) && !defined(OSGGLYPHS_TECHNIQUE_POINTS)
+    !defined(OSGGLYPHS_TEXTURED_SPRITE) && !defined(OSGGLYPHS_TECHNIQUE_POINTS)
 #define OSGGLYPHS_RAYCAST 1
 #endif
 

@@ -11,3 +11,6 @@ flat OSGGLYPHS_VARYING vec4 fragAxis; // vector shapes: unit axis, length
 OSGGLYPHS_VARYING vec3 fragLocal; // paper: billboard coordinates; polygons: eye-space normal
 flat OSGGLYPHS_VARYING vec4 fragFrame; // paper cones: the billboard's eye-space x and y directions
 #endif
+#ifdef OSGGLYPHS_TECHNIQUE_TEXTURE_MULTI
+flat OSGGLYPHS_VARYING float fragLayer; // the layer of the glyph's pre-lit sprite
+#endif
