@@ -9,46 +9,9 @@
 set -u
 viewer=$1 check=$2 data=$3 work=$4
 
-for tool in Xvfb xdotool; do
-    if ! command -v "$tool" >/dev/null; then
-        echo "SKIP: $tool is not installed (Debian packages xvfb, xdotool)"
-        exit 77
-    fi
-done
-
-rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
-xvfb_pid= viewer_pid=
-cleanup()
-{
-    [[ -n $viewer_pid ]] && kill "$viewer_pid" 2>/dev/null
-    [[ -n $xvfb_pid ]] && kill "$xvfb_pid" 2>/dev/null
-}
-trap cleanup EXIT
-fail()
-{
-    echo "FAIL: $*"
-    echo "--- viewer output:"
-    cat viewer.log 2>/dev/null
-    exit 1
-}
-
-# A display of its own: Xvfb picks a free number and writes it to fd 3.
-Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>display.txt 2>xvfb.log &
-xvfb_pid=$!
-for _ in $(seq 100); do
-    [[ -s display.txt ]] && break
-    sleep 0.1
-done
-[[ -s display.txt ]] || fail "Xvfb did not start: $(cat xvfb.log)"
-export DISPLAY=:$(head -n 1 display.txt)
-
-# Sanitizer builds: Mesa's GLX driver leaks 112 bytes and is unloaded (dlclose) before LeakSanitizer
-# reports, so the report cannot name the library and tests/sanitizer/lsan.supp cannot match it
-# (with dlclose disabled the report names the driver and lsan.supp suppresses it). The headless
-# tests keep checking the viewer for leaks; this one does not.
-export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
-"$viewer" "$data/spheres.lammpstrj" --size 400 300 --radius 0.5 >viewer.log 2>&1 &
-viewer_pid=$!
+source "$(dirname "${BASH_SOURCE[0]}")/../harness/WindowSession.sh"
+window_session_begin "$work"
+launch "$viewer" "$data/spheres.lammpstrj" --size 400 300 --radius 0.5
 window=$(timeout 30 xdotool search --sync --name '^osgglyphviewer' | head -n 1)
 [[ -n $window ]] || fail "no osgglyphviewer window appeared"
 xdotool windowfocus --sync "$window" || fail "cannot focus the window"
@@ -85,14 +48,5 @@ done
 grep -q "glyphs unlit" viewer.log || fail "l did not report unlit glyphs"
 grep -q "frame 1 of 0..1" viewer.log || fail "n did not report frame 1"
 
-xdotool key Escape
-for _ in $(seq 100); do
-    kill -0 "$viewer_pid" 2>/dev/null || break
-    sleep 0.1
-done
-kill -0 "$viewer_pid" 2>/dev/null && fail "Escape did not close the viewer"
-wait "$viewer_pid"
-status=$?
-viewer_pid=
-[[ $status == 0 ]] || fail "the viewer exited with $status"
+close_with_escape
 echo "PASS: screenshots in $work"
