@@ -2,7 +2,8 @@
 # against it: through find_package(osgGlyphs), through pkg-config, and once more with the
 # installed shader files replacing the embedded ones. Every run renders the consumer's scene
 # and compares it with BASELINE; OSGGLYPHS_BLESS=1 makes the first run rewrite BASELINE.
-# Variables: BUILD_DIR, SOURCE_DIR, WORK_DIR, BASELINE, CXX, CXX_FLAGS.
+# Variables: BUILD_DIR, SOURCE_DIR, WORK_DIR, BASELINE, CXX, CXX_FLAGS, STOCK_TOOL_PRELOAD (the ASan
+# runtime for stock OSG programs in sanitizer builds).
 
 function(run)
     execute_process(COMMAND ${ARGN} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE output)
@@ -89,6 +90,10 @@ if(OSGCONV)
     set(ENV{OSG_LIBRARY_PATH} "${libdir}")
     set(sample "${prefix}/share/osgGlyphs/data/melt500.lammpstrj")
     set(converted "${WORK_DIR}/melt500.osgt")
+    if(STOCK_TOOL_PRELOAD) # sanitizer builds: the ASan runtime before our plugin
+        set(ENV{LD_PRELOAD} "${STOCK_TOOL_PRELOAD}")
+        set(ENV{ASAN_OPTIONS} "detect_leaks=0")
+    endif()
     run("${OSGCONV}" -O "glyph=cone color=speed" "${sample}" "${converted}")
     file(STRINGS "${converted}" clouds REGEX "osgGlyphs::GlyphCloud")
     file(STRINGS "${converted}" cones REGEX "Shape cone")

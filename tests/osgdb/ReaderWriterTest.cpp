@@ -202,8 +202,12 @@ TEST(GlyphsPlugin, StockOsgconvConvertsThroughThePlugin)
     const std::string file = writeTestFile("convert.csv", spheresCsv());
     const std::string output = std::string(OSGGLYPHS_PLUGIN_TEST_DIR) + "/converted.osgb";
     std::filesystem::remove(output);
+    // Sanitizer builds: the stock program needs the ASan runtime before our plugin.
+    const std::string preload = OSGGLYPHS_STOCK_TOOL_PRELOAD;
+    const std::string environment =
+        preload.empty() ? std::string() : "env LD_PRELOAD=" + preload + " ASAN_OPTIONS=detect_leaks=0 ";
     const std::string command =
-        "osgconv -O 'radius-by=radius unlit' '" + file + "' '" + output + "' >/dev/null 2>&1";
+        environment + "osgconv -O 'radius-by=radius unlit' '" + file + "' '" + output + "' >/dev/null 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     osg::ref_ptr<osg::Node> converted = osgDB::readRefNodeFile(output);
     ASSERT_NE(asCloud(converted.get()), nullptr);

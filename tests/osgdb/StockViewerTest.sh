@@ -11,7 +11,9 @@ shift 3
 source "$(dirname "${BASH_SOURCE[0]}")/../harness/WindowSession.sh"
 window_session_begin "$work" osgviewer
 
-launch osgviewer --window 0 0 400 300 "$file" "$@"
+# Sanitizer builds: the stock program needs the ASan runtime before our plugin.
+launch env ${OSGGLYPHS_STOCK_TOOL_PRELOAD:+LD_PRELOAD=$OSGGLYPHS_STOCK_TOOL_PRELOAD} \
+    osgviewer --window 0 0 400 300 "$file" "$@"
 # OSG's window has neither a name nor _NET_WM_PID; it is the only window of this display.
 window=$(timeout 30 xdotool search --sync --onlyvisible --class '.' | head -n 1)
 [[ -n $window ]] || fail "no osgviewer window appeared"
