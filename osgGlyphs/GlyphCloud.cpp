@@ -3,6 +3,7 @@
 #include "GlyphMeshes.h"
 #include "HalfFloat.h"
 
+#include <osg/Camera>
 #include <osg/Notify>
 #include <osg/RenderInfo>
 #include <osg/Viewport>
@@ -166,6 +167,7 @@ void GlyphCloud::initialize()
     _vectorParamsUniform = new osg::Uniform("osgGlyphs_vectorParams", osg::Vec3());
     _arrowParamsUniform = new osg::Uniform("osgGlyphs_arrowParams", _arrowParams);
     _viewportUniform = new osg::Uniform("osgGlyphs_viewport", osg::Vec4(0.0f, 0.0f, 1.0f, 1.0f));
+    _singleSampleUniform = new osg::Uniform("osgGlyphs_singleSample", false);
     updateVectorUniforms();
     if (!_colorMap)
         _colorMap = ColorMap::getBuiltin("viridis");
@@ -553,6 +555,28 @@ osg::BoundingBox GlyphCloud::computeBoundingBox() const
     return box;
 }
 
+namespace
+{
+
+/** Whether the target of this draw has one sample per pixel: an FBO camera's attachments, else
+ * the context's traits. Unsure (no context) counts as multisampled. */
+bool isSingleSampled(osg::RenderInfo& renderInfo)
+{
+    const osg::Camera* camera = renderInfo.getCurrentCamera();
+    if (camera && camera->getRenderTargetImplementation() == osg::Camera::FRAME_BUFFER_OBJECT &&
+        !camera->getBufferAttachmentMap().empty())
+    {
+        for (const auto& attachment : camera->getBufferAttachmentMap())
+            if (attachment.second._multisampleSamples > 0)
+                return false;
+        return true;
+    }
+    const osg::GraphicsContext* context = renderInfo.getState()->getGraphicsContext();
+    return context && context->getTraits() && context->getTraits()->samples == 0;
+}
+
+}
+
 void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
 {
     GlyphStateSets::observeContext(renderInfo.getContextID()); // a map lookup once registered
@@ -571,6 +595,8 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
                 osg::Vec4(viewport->x(), viewport->y(), viewport->width(), viewport->height()));
             program->apply(*_viewportUniform);
         }
+        _singleSampleUniform->set(isSingleSampled(renderInfo));
+        program->apply(*_singleSampleUniform);
     }
     osg::Geometry::drawImplementation(renderInfo);
 }

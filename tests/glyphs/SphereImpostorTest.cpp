@@ -73,6 +73,44 @@ TEST_F(SphereImpostor, SmallSpheresAreExactToo)
     EXPECT_EQ(agreement.wrongDepth, 0) << "worst depth error " << agreement.worstDepthError;
 }
 
+TEST_F(SphereImpostor, SubPixelSpheresHitExactlyThePixelCentresTheyCover)
+{
+    // Spheres of 0.2 to 1 pixel, most between pixel centres: those are culled before
+    // rasterisation, and the rest must still hit every centre they cover.
+    std::vector<SphereSpec> spheres;
+    std::vector<osg::Vec4ub> palette;
+    for (int i = 0; i < 400; ++i)
+    {
+        const osg::Vec3 center(-4.5f + 0.4507f * (i % 20), 0.0f, -3.3f + 0.3301f * (i / 20));
+        const osg::Vec4ub color(20 + 11 * (i % 20), 20 + 11 * (i / 20), 200, 255);
+        spheres.push_back({center, 0.004f * (4 + i % 13), color}); // k/16 of the largest radius
+        palette.push_back(color);
+    }
+    AnalyticScene truth;
+    addSpheres(truth, spheres);
+    const Frame frame = renderer.render(group({createSphereCloud(spheres).get()}).get());
+
+    // Too small for compareWithTruth's certain pixels: compare every pixel centre's ray.
+    int hits = 0, wrongCoverage = 0, wrongLabel = 0, wrongDepth = 0;
+    for (int y = 0; y < frame.height(); ++y)
+    {
+        for (int x = 0; x < frame.width(); ++x)
+        {
+            const RayHit hit = truth.castPixel(frame, x, y);
+            hits += hit.hit() ? 1 : 0;
+            wrongCoverage += hit.hit() != frame.isCovered(x, y) ? 1 : 0;
+            if (!hit.hit() || !frame.isCovered(x, y))
+                continue;
+            wrongLabel += labelOfColor(frame.colorAt(x, y), palette) != hit.label ? 1 : 0;
+            wrongDepth += std::fabs(frame.depthAt(x, y) - frame.windowDepth(hit.point)) > EXACT_DEPTH ? 1 : 0;
+        }
+    }
+    EXPECT_GT(hits, 300);
+    EXPECT_EQ(wrongCoverage, 0) << "of " << hits << " pixel centres on a sphere";
+    EXPECT_EQ(wrongLabel, 0);
+    EXPECT_EQ(wrongDepth, 0);
+}
+
 TEST_F(SphereImpostor, DepthMatchesAFinelyTessellatedFixedFunctionSphere)
 {
     const osg::Vec3 center(-0.3f, 0.5f, 0.2f);
