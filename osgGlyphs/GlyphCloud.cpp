@@ -155,7 +155,9 @@ GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
 
 void GlyphCloud::initialize()
 {
-    setUseDisplayList(false);
+    // Per-cloud uniforms are set while drawing; a display list compiles that code and does not
+    // replay them, so the cloud would draw with another cloud's values (or none).
+    setSupportsDisplayList(false);
     setUseVertexBufferObjects(true);
     _packed = new osg::UIntArray;
     _packed->setPreserveDataType(true); // an integer attribute: glVertexAttribIPointer

@@ -174,7 +174,8 @@ void describeOptions(osg::ApplicationUsage& usage)
                                "at most 0.1, for a constant covered fraction of the view).");
     usage.addCommandLineOption("--seed <s>", "Seed of the random clouds (default 1).");
     usage.addCommandLineOption("--data-path <vbo|display-list|client-arrays>",
-                               "How vertex data reaches the GPU (paper section 3; default vbo).");
+                               "How vertex data reaches the GPU (paper section 3; default vbo). "
+                               "display-list is refused: glyph clouds cannot be drawn from display lists.");
     usage.addCommandLineOption("--max-ms <ms>", "Skip the larger n of a technique and shape once its median "
                                                 "frame time exceeds ms (default: no limit).");
     usage.addCommandLineOption("--headless <osmesa|egl>",
@@ -232,6 +233,13 @@ bool readLists(osg::ArgumentParser& arguments, Settings& settings)
     if (arguments.read("--data-path", text) && !parseDataPath(text, settings.dataPath))
     {
         arguments.reportError("--data-path: unknown value '" + text + "' (vbo, display-list, client-arrays)");
+        return false;
+    }
+    if (settings.dataPath == DataPath::DisplayList)
+    {
+        arguments.reportError(
+            "--data-path display-list: glyph clouds set per-cloud uniforms while drawing, "
+            "which a display list does not replay (see GlyphCloud); use vbo or client-arrays");
         return false;
     }
     if (arguments.read("--headless", text) && !osgGlyphs::parseHeadlessBackend(text, settings.backend))

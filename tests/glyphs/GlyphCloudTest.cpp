@@ -354,3 +354,16 @@ TEST_F(GlyphCloudData, TheOptimizerLeavesCloudsAndTheirTransformsAlone)
     ASSERT_EQ(scaledCloud->getNumParents(), 1u);
     EXPECT_NE(dynamic_cast<osg::MatrixTransform*>(scaledCloud->getParent(0)), nullptr);
 }
+
+TEST_F(GlyphCloudData, DisplayListsAreRefusedBecauseTheyWouldNotReplayTheUniforms)
+{
+    // Measured on Mesa: a uniform applied inside a compiled display list does not reach the draw.
+    osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{osg::Vec3(), 1.0f, osg::Vec4ub(255, 0, 0, 255)}});
+    osg::ref_ptr<NotifyCapture> capture = new NotifyCapture;
+    cloud->setUseDisplayList(true);
+    capture->stop();
+    EXPECT_FALSE(cloud->getSupportsDisplayList());
+    EXPECT_FALSE(cloud->getUseDisplayList());
+    osg::ref_ptr<GlyphCloud> copy = new GlyphCloud(*cloud);
+    EXPECT_FALSE(copy->getSupportsDisplayList());
+}
