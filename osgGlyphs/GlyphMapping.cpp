@@ -573,14 +573,6 @@ bool resolveColorMap(const std::string& name, osg::ref_ptr<ColorMap>& colorMap, 
     return colorMap.valid();
 }
 
-std::vector<std::string> getTechniqueNames()
-{
-    std::vector<std::string> names;
-    for (GlyphTechnique technique : getTechniques())
-        names.push_back(getTechniqueName(technique));
-    return names;
-}
-
 /** Sets the option; false with error saying what the value should be (without the option's name). */
 bool setOption(GlyphMappingOptions& options, const std::string& name, const std::string& value,
                std::string& error)

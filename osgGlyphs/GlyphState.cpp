@@ -133,6 +133,14 @@ std::vector<GlyphTechnique> osgGlyphs::getTechniques()
             GlyphTechnique::TextureMulti,   GlyphTechnique::PointsFloor};
 }
 
+std::vector<std::string> osgGlyphs::getTechniqueNames()
+{
+    std::vector<std::string> names;
+    for (GlyphTechnique technique : getTechniques())
+        names.push_back(getTechniqueName(technique));
+    return names;
+}
+
 bool osgGlyphs::parseTechnique(const std::string& name, GlyphTechnique& technique)
 {
     if (name == "default")

@@ -37,7 +37,6 @@ const char* const CSV_HEADER = "technique,shape,n,width,height,frames,ms_median,
 enum class DataPath
 {
     VBO,
-    DisplayList,
     ClientArrays
 };
 
@@ -45,8 +44,6 @@ const char* getDataPathName(DataPath path)
 {
     switch (path)
     {
-    case DataPath::DisplayList:
-        return "display-list";
     case DataPath::ClientArrays:
         return "client-arrays";
     default:
@@ -56,7 +53,7 @@ const char* getDataPathName(DataPath path)
 
 bool parseDataPath(const std::string& name, DataPath& path)
 {
-    for (DataPath candidate : {DataPath::VBO, DataPath::DisplayList, DataPath::ClientArrays})
+    for (DataPath candidate : {DataPath::VBO, DataPath::ClientArrays})
     {
         if (name == getDataPathName(candidate))
         {
@@ -173,7 +170,7 @@ void describeOptions(osg::ApplicationUsage& usage)
                                "Glyph radius (default: getDefaultRandomRadius(n) = 0.5/sqrt(n), "
                                "at most 0.1, for a constant covered fraction of the view).");
     usage.addCommandLineOption("--seed <s>", "Seed of the random clouds (default 1).");
-    usage.addCommandLineOption("--data-path <vbo|display-list|client-arrays>",
+    usage.addCommandLineOption("--data-path <vbo|client-arrays>",
                                "How vertex data reaches the GPU (paper section 3; default vbo). "
                                "display-list is refused: glyph clouds cannot be drawn from display lists.");
     usage.addCommandLineOption("--max-ms <ms>", "Skip the larger n of a technique and shape once its median "
@@ -232,14 +229,12 @@ bool readLists(osg::ArgumentParser& arguments, Settings& settings)
         return false;
     if (arguments.read("--data-path", text) && !parseDataPath(text, settings.dataPath))
     {
-        arguments.reportError("--data-path: unknown value '" + text + "' (vbo, display-list, client-arrays)");
-        return false;
-    }
-    if (settings.dataPath == DataPath::DisplayList)
-    {
-        arguments.reportError(
-            "--data-path display-list: glyph clouds set per-cloud uniforms while drawing, "
-            "which a display list does not replay (see GlyphCloud); use vbo or client-arrays");
+        if (text == "display-list")
+            arguments.reportError(
+                "--data-path display-list: glyph clouds set per-cloud uniforms while drawing, "
+                "which a display list does not replay (see GlyphCloud); use vbo or client-arrays");
+        else
+            arguments.reportError("--data-path: unknown value '" + text + "' (vbo, client-arrays)");
         return false;
     }
     if (arguments.read("--headless", text) && !osgGlyphs::parseHeadlessBackend(text, settings.backend))
@@ -287,7 +282,7 @@ bool readSettings(osg::ArgumentParser& arguments, Settings& settings)
 
 void applyDataPath(osg::Geometry& geometry, DataPath path)
 {
-    geometry.setUseDisplayList(path == DataPath::DisplayList);
+    geometry.setUseDisplayList(false);
     geometry.setUseVertexBufferObjects(path == DataPath::VBO);
 }
 

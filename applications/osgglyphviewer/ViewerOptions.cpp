@@ -15,14 +15,6 @@ const char* const PROGRAM = "osgglyphviewer";
 namespace
 {
 
-std::vector<std::string> getTechniqueNames()
-{
-    std::vector<std::string> names;
-    for (osgGlyphs::GlyphTechnique technique : osgGlyphs::getTechniques())
-        names.push_back(osgGlyphs::getTechniqueName(technique));
-    return names;
-}
-
 /** Reads "option v1 .. vn" of n numbers, which osg::ArgumentParser cannot do beyond eight. */
 bool readNumbers(osg::ArgumentParser& arguments, const std::string& option, std::vector<double>& values,
                  bool& found, std::string& error)
@@ -230,7 +222,8 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
                                                   "sphere point along the vectors.");
     usage.addCommandLineOption("--unlit", "Flat colours instead of lit glyphs (key l toggles).");
     usage.addCommandLineOption("--technique <name>",
-                               "How glyphs are drawn: " + joinNames(getTechniqueNames()) + " (default " +
+                               "How glyphs are drawn: " + joinNames(osgGlyphs::getTechniqueNames()) +
+                                   " (default " +
                                    osgGlyphs::getTechniqueName(osgGlyphs::DEFAULT_GLYPH_TECHNIQUE) + ").");
 
     usage.addCommandLineOption("--size <w> <h>", "Window or image size in pixels (default 800 600).");

@@ -161,37 +161,43 @@ public:
 
         ReadSettings settings;
         std::string error;
-        if (!parseOptionString(options ? options->getOptionString() : std::string(), settings, error))
+        if (!parseOptionString(getOptionString(options), settings, error))
             return failure(error);
         osgGlyphs::PointReadOptions readOptions;
         readOptions.format = settings.format;
         if (readOptions.format.empty() && osgGlyphs::formatFromExtension(path).empty())
             return failure(path + ": no point format for this extension; give one with format=<name>");
-        osg::ref_ptr<osgGlyphs::PointDataset> dataset = osgGlyphs::readPointFile(path, readOptions, error);
-        if (!dataset)
-            return failure(error);
-        osg::ref_ptr<osg::Node> scene = createScene(*dataset, settings, error);
-        return scene ? ReadResult(scene.get()) : failure(error);
+        return toScene(osgGlyphs::readPointFile(path, readOptions, error), settings, error);
     }
 
     ReadResult readNode(std::istream& stream, const Options* options) const override
     {
         ReadSettings settings;
         std::string error;
-        if (!parseOptionString(options ? options->getOptionString() : std::string(), settings, error))
+        if (!parseOptionString(getOptionString(options), settings, error))
             return failure(error);
         if (settings.format.empty())
             return ReadResult::FILE_NOT_HANDLED; // a stream has no extension to tell its format
-        osg::ref_ptr<osgGlyphs::PointDataset> dataset = osgGlyphs::readPointStream(
-            stream, settings.format, "stream", osgGlyphs::PointReadOptions(), error);
-        if (!dataset)
-            return failure(error);
-        osg::ref_ptr<osg::Node> scene = createScene(*dataset, settings, error);
-        return scene ? ReadResult(scene.get()) : failure(error);
+        return toScene(osgGlyphs::readPointStream(stream, settings.format, "stream",
+                                                  osgGlyphs::PointReadOptions(), error),
+                       settings, error);
     }
 
 private:
+    static std::string getOptionString(const Options* options)
+    {
+        return options ? options->getOptionString() : std::string();
+    }
+
     static ReadResult failure(const std::string& message) { return ReadResult("osgdb_glyphs: " + message); }
+
+    /** The glyphs of a dataset, or the error of its reading or mapping. */
+    static ReadResult toScene(const osg::ref_ptr<osgGlyphs::PointDataset>& dataset,
+                              const ReadSettings& settings, std::string& error)
+    {
+        osg::ref_ptr<osg::Node> scene = dataset ? createScene(*dataset, settings, error) : nullptr;
+        return scene ? ReadResult(scene.get()) : failure(error);
+    }
 };
 
 REGISTER_OSGPLUGIN(glyphs, ReaderWriterGlyphs)

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 using namespace osgGlyphsTest;
 using osgGlyphs::GlyphCloud;
@@ -158,6 +159,23 @@ TEST(GlyphsPlugin, PseudoExtensionAndPreloadedPluginTakePlyFromOsgsOwnReader)
 
     ReadResult direct = readWithPlugin(file, "radius-by=radius unlit");
     ASSERT_NE(asCloud(direct.getNode()), nullptr) << direct.message();
+}
+
+TEST(GlyphsPlugin, StreamsAreReadInTheFormatTheOptionsName)
+{
+    osgDB::ReaderWriter* plugin = osgDB::Registry::instance()->getReaderWriterForExtension("glyphs");
+    ASSERT_NE(plugin, nullptr);
+    std::istringstream csv(spheresCsv());
+    ReadResult result = plugin->readNode(csv, withOptions("format=csv radius-by=radius unlit").get());
+    ASSERT_NE(asCloud(result.getNode()), nullptr) << result.message();
+    expectAnalyticSpheres(result.getNode(), "plugin_stream_spheres");
+
+    std::istringstream unnamed(spheresCsv());
+    EXPECT_EQ(plugin->readNode(unnamed, withOptions("").get()).status(), ReadResult::FILE_NOT_HANDLED);
+    std::istringstream broken("x,y,z\n1,2\n");
+    result = plugin->readNode(broken, withOptions("format=csv").get());
+    EXPECT_EQ(result.status(), ReadResult::ERROR_IN_READING_FILE);
+    EXPECT_NE(result.message().find("osgdb_glyphs: stream:2: "), std::string::npos) << result.message();
 }
 
 TEST(GlyphsPlugin, ForeignExtensionsAreNotHandled)
