@@ -3,19 +3,41 @@
 // True when the framebuffer has one sample per pixel, at its centre (no multisampling).
 uniform bool osgGlyphs_singleSample;
 
-/** Whether a rectangle with these NDC corners can cover a sample. Single-sampled, it must hold a
-  * pixel centre: most glyphs of a million-point cloud are smaller than a pixel and fall between
-  * centres, and skipping them saves the rasteriser their primitives. */
+/** Whether a rectangle with these NDC corners (in strip order) can cover a sample. Single-sampled,
+  * it must hold a pixel centre: most glyphs of a million-point cloud are smaller than a pixel
+  * and fall between centres, and skipping them saves the rasteriser their primitives. A
+  * rectangle whose bounding box holds at most 2x2 centres has each of them tested, since a
+  * slanted one can miss the centres of its box. */
 bool coversASample(vec2 corners[4])
 {
     if (!osgGlyphs_singleSample)
         return true;
-    vec2 lo = min(min(corners[0], corners[1]), min(corners[2], corners[3]));
-    vec2 hi = max(max(corners[0], corners[1]), max(corners[2], corners[3]));
+    vec2 toPixels = 0.5 * osgGlyphs_viewport.zw;
+    vec2 origin = (corners[0] + 1.0) * toPixels;
+    vec2 edge1 = (corners[1] - corners[0]) * toPixels;
+    vec2 edge2 = (corners[2] - corners[0]) * toPixels;
+    vec2 lo = min(min(origin, origin + edge1), min(origin + edge2, origin + edge1 + edge2));
+    vec2 hi = max(max(origin, origin + edge1), max(origin + edge2, origin + edge1 + edge2));
     const float margin = 1e-3; // pixels, for rounding
-    vec2 firstCentre = ceil((lo * 0.5 + 0.5) * osgGlyphs_viewport.zw - 0.5 - margin);
-    vec2 lastCentre = floor((hi * 0.5 + 0.5) * osgGlyphs_viewport.zw - 0.5 + margin);
-    return all(lessThanEqual(firstCentre, lastCentre));
+    vec2 firstCentre = ceil(lo - 0.5 - margin);
+    vec2 lastCentre = floor(hi - 0.5 + margin);
+    if (any(greaterThan(firstCentre, lastCentre)))
+        return false;
+    if (any(greaterThan(lastCentre - firstCentre, vec2(1.0))))
+        return true;
+    // The centre's coordinates along the edges, s and t in [0, 1] inside, scaled by the area.
+    float area = edge1.x * edge2.y - edge1.y * edge2.x;
+    vec2 areaMargin = margin * vec2(length(edge2), length(edge1));
+    for (int k = 0; k < 4; ++k)
+    {
+        vec2 centre = firstCentre + vec2(k & 1, k >> 1);
+        vec2 d = centre + 0.5 - origin;
+        vec2 st = vec2(d.x * edge2.y - d.y * edge2.x, edge1.x * d.y - edge1.y * d.x);
+        if (all(lessThanEqual(centre, lastCentre)) && all(greaterThanEqual(st, -areaMargin)) &&
+            all(lessThanEqual(st, area + areaMargin)))
+            return true;
+    }
+    return false;
 }
 
 /** Four NDC corners (in triangle-strip order) of a rectangle that contains the glyph, and the

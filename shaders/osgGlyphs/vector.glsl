@@ -33,9 +33,25 @@ void axisFrame(vec3 axis, out vec3 u, out vec3 v)
     v = cross(axis, u);
 }
 
+/** The range of linear(clip) / clip.w over a circle's projection: the circle's clip-space centre
+  * and two orthogonal clip-space radii (w > 0 all round), and a linear form on clip xyz (its w
+  * is 0). With k = linear / w, k is reached where (A - kD) + (B - kE) cos + (C - kF) sin = 0 has
+  * a solution; the extremes solve a quadratic whose discriminant, in Lagrange's form, keeps
+  * its precision for circles far smaller than their distance. */
+vec2 projectedRange(vec4 centre, vec4 radiusU, vec4 radiusV, vec4 linear)
+{
+    float A = dot(linear, centre), B = dot(linear, radiusU), C = dot(linear, radiusV);
+    float D = centre.w, E = radiusU.w, F = radiusV.w;
+    float a = D * D - E * E - F * F;
+    float b = A * D - B * E - C * F;
+    float DB_AE = D * B - A * E, DC_AF = D * C - A * F, BF_CE = B * F - C * E;
+    float root = sqrt(max(DB_AE * DB_AE + DC_AF * DC_AF - BF_CE * BF_CE, 0.0));
+    return vec2(b - root, b + root) / a;
+}
+
 /** A screen-space rectangle (four NDC corners, in strip order) that contains the shape: the
-  * octagons circumscribing its discs, projected, bounded along the projected axis and across
-  * it. Returns false for a glyph wholly behind the near plane. */
+  * exact extents of the projected discs that span it, along the projected axis and across it.
+  * Returns false for a glyph wholly behind the near plane. */
 bool vectorScreenBound(vec3 base, vec3 axis, float len, float radius, out vec2 corners[4], out float nearestNdcZ)
 {
     vec2 discs[3];
@@ -55,30 +71,29 @@ bool vectorScreenBound(vec3 base, vec3 axis, float len, float radius, out vec2 c
         return true;
     }
 
+    // Clip coordinates are linear in eye space, so each disc is a centre and two radii in clip space.
     vec3 u, v;
     axisFrame(axis, u, v);
     vec4 baseClip = gl_ProjectionMatrix * vec4(base, 1.0);
-    vec4 tipClip = gl_ProjectionMatrix * vec4(base + axis * len, 1.0);
+    vec4 axisClip = gl_ProjectionMatrix * vec4(axis, 0.0);
+    vec4 uClip = gl_ProjectionMatrix * vec4(u, 0.0);
+    vec4 vClip = gl_ProjectionMatrix * vec4(v, 0.0);
+    vec4 tipClip = baseClip + axisClip * len;
     vec2 along = tipClip.xy / tipClip.w - baseClip.xy / baseClip.w;
     along = dot(along, along) > 1e-12 ? normalize(along) : vec2(1.0, 0.0);
     vec2 across = vec2(-along.y, along.x);
 
     vec2 lo = vec2(1e30), hi = vec2(-1e30);
     nearestNdcZ = 1.0;
-    const float circumscribe = 1.0823922; // 1 / cos(pi / 8): the octagon contains the circle
     for (int disc = 0; disc < count; ++disc)
     {
-        for (int k = 0; k < 8; ++k)
-        {
-            float angle = float(k) * 0.78539816;
-            vec3 offset = (u * cos(angle) + v * sin(angle)) * (discs[disc].y * circumscribe);
-            vec4 clip = gl_ProjectionMatrix * vec4(base + axis * discs[disc].x + offset, 1.0);
-            vec3 ndc = clip.xyz / clip.w;
-            vec2 p = vec2(dot(ndc.xy, along), dot(ndc.xy, across));
-            lo = min(lo, p);
-            hi = max(hi, p);
-            nearestNdcZ = min(nearestNdcZ, ndc.z);
-        }
+        vec4 centre = baseClip + axisClip * discs[disc].x;
+        vec4 radiusU = uClip * discs[disc].y, radiusV = vClip * discs[disc].y;
+        vec2 alongRange = projectedRange(centre, radiusU, radiusV, vec4(along, 0.0, 0.0));
+        vec2 acrossRange = projectedRange(centre, radiusU, radiusV, vec4(across, 0.0, 0.0));
+        lo = min(lo, vec2(alongRange.x, acrossRange.x));
+        hi = max(hi, vec2(alongRange.y, acrossRange.y));
+        nearestNdcZ = min(nearestNdcZ, projectedRange(centre, radiusU, radiusV, vec4(0.0, 0.0, 1.0, 0.0)).x);
     }
     corners = vec2[4](along * lo.x + across * lo.y, along * hi.x + across * lo.y, along * lo.x + across * hi.y,
                       along * hi.x + across * hi.y);

@@ -151,6 +151,44 @@ TEST_P(VectorGlyphs, SmallGlyphsAreExactToo)
         << "worst depth error " << agreement.worstDepthError;
 }
 
+TEST_P(VectorGlyphs, SubPixelGlyphsHitExactlyThePixelCentresTheyCover)
+{
+    // Glyphs 0.25 to 1 pixel wide and 1 to 3 long, slanted every way: a glyph is culled before
+    // rasterisation when its slanted bound holds no pixel centre, and the rest must still hit
+    // every centre they cover. Radii are k/8 of the largest.
+    std::vector<VectorSpec> glyphs;
+    std::vector<osg::Vec4ub> palette;
+    for (int i = 0; i < 400; ++i)
+    {
+        const osg::Vec3 position(-4.5f + 0.4507f * (i % 20), 0.0f, -3.3f + 0.3301f * (i / 20));
+        const float radius = 0.004f * (2 + i % 7);
+        const osg::Vec3 direction(std::cos(0.9f * i), std::sin(1.7f * i), std::sin(0.9f * i));
+        const osg::Vec4ub color(20 + 11 * (i % 20), 20 + 11 * (i / 20), 200, 255);
+        glyphs.push_back({position, direction * ((4.0f + i % 3) * radius / direction.length()), radius, color});
+        palette.push_back(color);
+    }
+    AnalyticScene truth;
+    addVectorGlyphs(truth, GetParam(), glyphs);
+    const Frame frame = renderer.render(group({createVectorCloud(GetParam(), glyphs).get()}).get());
+    saveFrame(frame, "subpixel_vectors_" + shapeName());
+
+    int hits = 0, wrongCoverage = 0, wrongLabel = 0;
+    for (int y = 0; y < frame.height(); ++y)
+    {
+        for (int x = 0; x < frame.width(); ++x)
+        {
+            const RayHit hit = truth.castPixel(frame, x, y);
+            hits += hit.hit() ? 1 : 0;
+            wrongCoverage += hit.hit() != frame.isCovered(x, y) ? 1 : 0;
+            if (hit.hit() && frame.isCovered(x, y))
+                wrongLabel += labelOfColor(frame.colorAt(x, y), palette) != hit.label ? 1 : 0;
+        }
+    }
+    EXPECT_GT(hits, 200);
+    EXPECT_EQ(wrongCoverage, 0) << "of " << hits << " pixel centres on a glyph";
+    EXPECT_EQ(wrongLabel, 0);
+}
+
 TEST_P(VectorGlyphs, OccludedByAndPiercingFixedFunctionGeometry)
 {
     renderer.setLookAt(osg::Vec3d(2.0, -9.0, 3.0), osg::Vec3d(), osg::Vec3d(0.0, 0.0, 1.0));
