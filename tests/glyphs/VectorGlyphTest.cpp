@@ -164,7 +164,8 @@ TEST_P(VectorGlyphs, SubPixelGlyphsHitExactlyThePixelCentresTheyCover)
         const float radius = 0.004f * (2 + i % 7);
         const osg::Vec3 direction(std::cos(0.9f * i), std::sin(1.7f * i), std::sin(0.9f * i));
         const osg::Vec4ub color(20 + 11 * (i % 20), 20 + 11 * (i / 20), 200, 255);
-        glyphs.push_back({position, direction * ((4.0f + i % 3) * radius / direction.length()), radius, color});
+        glyphs.push_back(
+            {position, direction * ((4.0f + i % 3) * radius / direction.length()), radius, color});
         palette.push_back(color);
     }
     AnalyticScene truth;
