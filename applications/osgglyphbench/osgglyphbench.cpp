@@ -19,6 +19,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -31,7 +32,7 @@ namespace
 const char* const PROGRAM = "osgglyphbench";
 
 const char* const CSV_HEADER = "technique,shape,n,width,height,frames,ms_median,ms_min,ms_max,first_frame_ms,"
-                               "gpu_bytes_per_glyph,data_path,coverage";
+                               "gpu_bytes_per_glyph,data_path,coverage,radius";
 
 /** How vertex data reaches the GPU (paper section 3). */
 enum class DataPath
@@ -73,6 +74,7 @@ struct Settings
     int height = 600;
     unsigned int frames = 10;
     float radius = 0.0f; // <= 0: getDefaultRandomRadius(n)
+    bool equalCoverage = false;
     unsigned int seed = 1;
     double maxMs = 0.0; // 0: no limit
     std::string csvFile;
@@ -93,6 +95,7 @@ struct Result
     double firstFrameMs;
     double bytesPerGlyph;
     double coverage;
+    float radius;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -169,6 +172,11 @@ void describeOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--radius <r>",
                                "Glyph radius (default: getDefaultRandomRadius(n) = 0.5/sqrt(n), "
                                "at most 0.1, for a constant covered fraction of the view).");
+    usage.addCommandLineOption("--equal-coverage",
+                               "Give cones, arrows and cylinders the radius at which they cover as much of "
+                               "the view as spheres of the radius above, at the same n (from one untimed "
+                               "frame of each, scaling the radius by the square root of the coverage "
+                               "ratio), so that shapes are compared at the same fragment load.");
     usage.addCommandLineOption("--seed <s>", "Seed of the random clouds (default 1).");
     usage.addCommandLineOption("--data-path <vbo|client-arrays>",
                                "How vertex data reaches the GPU (paper section 3; default vbo). "
@@ -200,8 +208,8 @@ void printHelp(osg::ApplicationUsage& usage)
               << "Environment: MESA_SHADER_CACHE_DISABLE is set to true unless already set, so that\n"
               << "first_frame_ms includes compiling the shaders; OSGGLYPHS_HEADLESS picks the backend.\n\n";
     usage.write(std::cout, osg::ApplicationUsage::COMMAND_LINE_OPTION);
-    std::cout << "\nCSV columns: " << CSV_HEADER << "\n(data_path and coverage, the fraction of the view "
-              << "drawn on, follow the required columns.)" << std::endl;
+    std::cout << "\nCSV columns: " << CSV_HEADER << "\n(data_path, coverage, the fraction of the view "
+              << "drawn on, and the glyph radius follow the required columns.)" << std::endl;
 }
 
 /** The --quick preset; options given explicitly override it afterwards. */
@@ -250,6 +258,7 @@ void readValues(osg::ArgumentParser& arguments, Settings& settings)
     arguments.read("--size", settings.width, settings.height);
     arguments.read("--frames", settings.frames);
     arguments.read("--radius", settings.radius);
+    settings.equalCoverage = arguments.read("--equal-coverage");
     arguments.read("--seed", settings.seed);
     arguments.read("--max-ms", settings.maxMs);
     arguments.read("--csv", settings.csvFile);
@@ -304,13 +313,14 @@ osg::ref_ptr<osg::Geometry> createPointsFloor(osg::Vec3Array* positions)
 
 /** The drawable of a case and its GPU bytes per glyph. */
 osg::ref_ptr<osg::Geometry> createDrawable(osgGlyphs::GlyphTechnique technique, osgGlyphs::GlyphShape shape,
-                                           unsigned int n, const Settings& settings, double& bytesPerGlyph)
+                                           unsigned int n, float radius, const Settings& settings,
+                                           double& bytesPerGlyph)
 {
     osgGlyphs::RandomCloudOptions options;
     options.count = n;
     options.seed = settings.seed;
     options.shape = shape;
-    options.radius = settings.radius;
+    options.radius = radius;
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphs::createRandomCloud(options);
     osg::ref_ptr<osg::Geometry> drawable = cloud;
     if (osgGlyphs::isTechniqueSupported(technique, shape))
@@ -445,7 +455,8 @@ void writeCsvRow(std::ostream& csv, const Result& result, const Settings& settin
         << ',' << result.n << ',' << settings.width << ',' << settings.height << ',' << settings.frames << ','
         << format(result.msMedian, 4) << ',' << format(result.msMin, 4) << ',' << format(result.msMax, 4)
         << ',' << format(result.firstFrameMs, 4) << ',' << format(result.bytesPerGlyph, 2) << ','
-        << getDataPathName(settings.dataPath) << ',' << format(result.coverage, 4) << '\n'
+        << getDataPathName(settings.dataPath) << ',' << format(result.coverage, 4) << ','
+        << format(result.radius, 7) << '\n'
         << std::flush;
 }
 
@@ -679,12 +690,66 @@ std::vector<Case> listCases(const Settings& settings)
     return cases;
 }
 
-/** Measures one case; false without a headless context. The renderer string is filled in. */
-bool measureCase(const Case& c, const Settings& settings, Result& result, std::string& renderer)
+/** The fraction of the view that n glyphs of this shape and radius cover in one untimed frame of
+ * the default technique; negative without a headless context. */
+double measureCoverage(osgGlyphs::GlyphShape shape, unsigned int n, float radius, const Settings& settings)
 {
-    result = Result{c.technique, c.shape, c.n, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    Settings once = settings;
+    once.frames = 1;
+    double bytesPerGlyph = 0.0, firstFrameMs = 0.0;
     osg::ref_ptr<osg::Geode> scene = new osg::Geode;
-    scene->addDrawable(createDrawable(c.technique, c.shape, c.n, settings, result.bytesPerGlyph).get());
+    scene->addDrawable(
+        createDrawable(osgGlyphs::GlyphTechnique::GeometryShader, shape, n, radius, once, bytesPerGlyph)
+            .get());
+    std::vector<double> frameMs;
+    osg::ref_ptr<osgGlyphs::OffscreenViewer> viewer;
+    if (!measure(once, scene.get(), firstFrameMs, frameMs, viewer))
+        return -1.0;
+    return getCoverage(*viewer->getColorImage());
+}
+
+/** The glyph radius of a case: --radius or getDefaultRandomRadius(n); with --equal-coverage, a
+ * vector shape's is scaled until it covers the view as spheres of that radius do (within 2%,
+ * at most 5 untimed frames). Coverage grows as a power of the radius, close to 2; each step
+ * solves for the power through the last two frames. 0 without a context. */
+float getCaseRadius(const Case& c, const Settings& settings,
+                    std::map<std::pair<int, unsigned int>, float>& cache)
+{
+    const float radius = settings.radius > 0.0f ? settings.radius : osgGlyphs::getDefaultRandomRadius(c.n);
+    if (!settings.equalCoverage || c.shape == osgGlyphs::GlyphShape::Sphere)
+        return radius;
+    const std::pair<int, unsigned int> key(static_cast<int>(c.shape), c.n);
+    if (cache.count(key))
+        return cache[key];
+    const double target = measureCoverage(osgGlyphs::GlyphShape::Sphere, c.n, radius, settings);
+    double scaled = radius, coverage = 0.0, power = 2.0;
+    double lastScaled = 0.0, lastCoverage = 0.0;
+    for (int step = 0; step < 5; ++step)
+    {
+        coverage = measureCoverage(c.shape, c.n, static_cast<float>(scaled), settings);
+        if (target <= 0.0 || coverage <= 0.0)
+            return 0.0f;
+        if (std::fabs(coverage / target - 1.0) < 0.02)
+            break;
+        if (lastCoverage > 0.0 && lastCoverage != coverage)
+            power = std::clamp(std::log(coverage / lastCoverage) / std::log(scaled / lastScaled), 0.5, 4.0);
+        lastScaled = scaled;
+        lastCoverage = coverage;
+        scaled *= std::pow(target / coverage, 1.0 / power);
+    }
+    std::cout << "[equal coverage] " << osgGlyphs::getShapeName(c.shape) << " n=" << c.n << ": radius "
+              << format(scaled / radius, 3) << " x the spheres', covering " << format(100.0 * coverage, 1)
+              << "% of the view (spheres: " << format(100.0 * target, 1) << "%)" << std::endl;
+    return cache[key] = static_cast<float>(scaled);
+}
+
+/** Measures one case; false without a headless context. The renderer string is filled in. */
+bool measureCase(const Case& c, float radius, const Settings& settings, Result& result, std::string& renderer)
+{
+    result = Result{c.technique, c.shape, c.n, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, radius};
+    osg::ref_ptr<osg::Geode> scene = new osg::Geode;
+    scene->addDrawable(
+        createDrawable(c.technique, c.shape, c.n, radius, settings, result.bytesPerGlyph).get());
     std::vector<double> frameMs;
     osg::ref_ptr<osgGlyphs::OffscreenViewer> viewer;
     if (!measure(settings, scene.get(), result.firstFrameMs, frameMs, viewer))
@@ -762,6 +827,7 @@ int run(const Settings& settings)
     const std::vector<Case> cases = listCases(settings);
     std::vector<Result> results;
     std::string renderer;
+    std::map<std::pair<int, unsigned int>, float> radii; // with --equal-coverage: by (shape, n)
     for (size_t i = 0; i < cases.size(); ++i)
     {
         const Case& c = cases[i];
@@ -772,7 +838,8 @@ int run(const Settings& settings)
             continue;
         }
         Result result;
-        if (!measureCase(c, settings, result, renderer))
+        const float radius = getCaseRadius(c, settings, radii);
+        if (radius <= 0.0f || !measureCase(c, radius, settings, result, renderer))
         {
             std::cerr << PROGRAM << ": error: no headless GL context" << std::endl;
             return 1;
