@@ -60,6 +60,8 @@ void GlyphCloud::configureDrawing()
     const GlyphTechnique technique = getEffectiveTechnique();
     osg::Array* vectors = hasVectorShape() ? _vectors.get() : nullptr;
     osg::Array* colors = _colorMode == GlyphColorMode::RGBA ? _colors.get() : nullptr;
+    osg::Array* radiusScalar =
+        _compressedAttributes ? static_cast<osg::Array*>(_packed.get()) : _unpacked.get();
     getVertexAttribArrayList().clear();
     setNormalArray(nullptr);
     removePrimitiveSet(0, getNumPrimitiveSets());
@@ -98,7 +100,7 @@ void GlyphCloud::configureDrawing()
             addPrimitiveSet(triangles.get());
         }
         attach(GlyphStateSets::POSITION_ATTRIBUTE, _positions.get(), osg::Array::BIND_PER_VERTEX);
-        attach(GlyphStateSets::PACKED_ATTRIBUTE, _packed.get(), osg::Array::BIND_PER_VERTEX);
+        attach(GlyphStateSets::PACKED_ATTRIBUTE, radiusScalar, osg::Array::BIND_PER_VERTEX);
         attach(GlyphStateSets::COLOR_ATTRIBUTE, colors, osg::Array::BIND_PER_VERTEX);
         attach(GlyphStateSets::VECTOR_ATTRIBUTE, vectors, osg::Array::BIND_PER_VERTEX);
         break;
@@ -114,8 +116,12 @@ void GlyphCloud::configureDrawing()
                  {osg::Vec2(-1, -1), osg::Vec2(1, -1), osg::Vec2(1, 1), osg::Vec2(-1, 1)})
                 corners->push_back(corner);
         attach(GlyphStateSets::CORNER_ATTRIBUTE, corners.get(), osg::Array::BIND_PER_VERTEX);
-        attach(GlyphStateSets::PACKED_ATTRIBUTE, repeatFourTimes(_packed.get(), _numGlyphs).get(),
-               osg::Array::BIND_PER_VERTEX);
+        osg::ref_ptr<osg::Array> repeatedRadiusScalar;
+        if (_compressedAttributes)
+            repeatedRadiusScalar = repeatFourTimes(_packed.get(), _numGlyphs);
+        else
+            repeatedRadiusScalar = repeatFourTimes(_unpacked.get(), _numGlyphs);
+        attach(GlyphStateSets::PACKED_ATTRIBUTE, repeatedRadiusScalar.get(), osg::Array::BIND_PER_VERTEX);
         attach(GlyphStateSets::COLOR_ATTRIBUTE, repeatFourTimes(_colors.get(), colors ? _numGlyphs : 0).get(),
                osg::Array::BIND_PER_VERTEX);
         attach(GlyphStateSets::VECTOR_ATTRIBUTE,
@@ -126,7 +132,7 @@ void GlyphCloud::configureDrawing()
     default:
         // One vertex per glyph.
         setVertexArray(_positions.get());
-        attach(GlyphStateSets::PACKED_ATTRIBUTE, _packed.get(), osg::Array::BIND_PER_VERTEX);
+        attach(GlyphStateSets::PACKED_ATTRIBUTE, radiusScalar, osg::Array::BIND_PER_VERTEX);
         attach(GlyphStateSets::COLOR_ATTRIBUTE, colors, osg::Array::BIND_PER_VERTEX);
         attach(GlyphStateSets::VECTOR_ATTRIBUTE, vectors, osg::Array::BIND_PER_VERTEX);
         addPrimitiveSet(new osg::DrawArrays(GL_POINTS, 0, _numGlyphs));
@@ -147,7 +153,8 @@ GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
       _shape(other._shape), _technique(other._technique), _anchor(other._anchor),
       _lengthScale(other._lengthScale), _uniformLength(other._uniformLength),
       _arrowParams(other._arrowParams), _polygonSlices(other._polygonSlices),
-      _polygonStacks(other._polygonStacks), _lit(other._lit), _autoRange(other._autoRange),
+      _polygonStacks(other._polygonStacks), _lit(other._lit),
+      _compressedAttributes(other._compressedAttributes), _autoRange(other._autoRange),
       _rangeMin(other._rangeMin), _rangeMax(other._rangeMax), _material(other._material)
 {
     initialize();
@@ -161,6 +168,7 @@ void GlyphCloud::initialize()
     setUseVertexBufferObjects(true);
     _packed = new osg::UIntArray;
     _packed->setPreserveDataType(true); // an integer attribute: glVertexAttribIPointer
+    _unpacked = new osg::Vec2Array;
     // Uniforms are per cloud: each copy gets its own.
     _radiusScaleUniform = new osg::Uniform("osgGlyphs_radiusScale", 1.0f);
     _baseColorUniform = new osg::Uniform("osgGlyphs_baseColor", _color);
@@ -331,6 +339,13 @@ void GlyphCloud::setLit(bool lit)
     updateStateSet();
 }
 
+void GlyphCloud::setCompressedAttributes(bool compressed)
+{
+    _compressedAttributes = compressed;
+    updatePackedAttributes();
+    updateStateSet();
+}
+
 void GlyphCloud::setMaterial(float ambient, float specular, float shininess)
 {
     _material.set(ambient, specular, shininess);
@@ -457,6 +472,7 @@ void GlyphCloud::updatePackedAttributes()
         _packed->assign(packed.begin(), packed.end());
         _packed->dirty();
     }
+    updateUnpackedAttributes(packed);
     _numGlyphs = static_cast<unsigned int>(count);
 
     auto report = [&](unsigned int bad, const char* problem)
@@ -484,6 +500,35 @@ void GlyphCloud::updatePackedAttributes()
     configureDrawing();
 }
 
+void GlyphCloud::updateUnpackedAttributes(const std::vector<uint32_t>& packed)
+{
+    if (_compressedAttributes)
+    {
+        _unpacked->clear();
+        _unpacked->trim();
+        return;
+    }
+    // The packed values without their rounding: radius / radius scale, scalar in [0, 1] over the data's
+    // range.
+    const double span = double(_dataMax) - double(_dataMin);
+    std::vector<osg::Vec2> unpacked(packed.size());
+    for (size_t i = 0; i < packed.size(); ++i)
+    {
+        if ((packed[i] & 0xffffu) == 0)
+            continue; // not drawn: radius 0
+        const float relative = _radii.valid() ? (*_radii)[i] / _radiusScale : 1.0f;
+        const float scalar = _scalars.valid() && span > 0.0
+                                 ? static_cast<float>(((*_scalars)[i] - double(_dataMin)) / span)
+                                 : 0.0f;
+        unpacked[i].set(relative, scalar);
+    }
+    if (!std::equal(unpacked.begin(), unpacked.end(), _unpacked->begin(), _unpacked->end()))
+    {
+        _unpacked->assign(unpacked.begin(), unpacked.end());
+        _unpacked->dirty();
+    }
+}
+
 void GlyphCloud::updateScalarMapping()
 {
     // colormap coordinate = (value - rangeMin) / (rangeMax - rangeMin), where
@@ -503,6 +548,7 @@ void GlyphCloud::updateStateSet()
     variant.technique = getEffectiveTechnique();
     variant.colorMode = _colorMode;
     variant.lit = _lit;
+    variant.compressedAttributes = _compressedAttributes;
     variant.colorMap = _colorMode == GlyphColorMode::Scalar ? _colorMap.get() : nullptr;
     if (variant.technique == GlyphTechnique::TextureMulti && _colorMode == GlyphColorMode::Uniform)
         variant.color = _color;
@@ -533,7 +579,8 @@ osg::BoundingBox GlyphCloud::computeBoundingBox() const
         const uint16_t halfRadius = static_cast<uint16_t>((*_packed)[i] & 0xffffu);
         if (halfRadius == 0)
             continue;
-        const float radius = detail::fromHalf(halfRadius) * _radiusScale * widest;
+        const float relative = _compressedAttributes ? detail::fromHalf(halfRadius) : (*_unpacked)[i].x();
+        const float radius = relative * _radiusScale * widest;
         const osg::Vec3 pad(radius, radius, radius);
         const osg::Vec3& p = (*_positions)[i];
         if (!hasVectorShape())

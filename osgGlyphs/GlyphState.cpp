@@ -230,6 +230,7 @@ osg::Program* GlyphStateSets::getProgramLocked(bool geometryStage)
         program->addShader(shader.get());
     }
     program->addBindAttribLocation("osgGlyphs_packed", PACKED_ATTRIBUTE);
+    program->addBindAttribLocation("osgGlyphs_radiusScalar", PACKED_ATTRIBUTE); // uncompressed
     program->addBindAttribLocation("osgGlyphs_color", COLOR_ATTRIBUTE);
     program->addBindAttribLocation("osgGlyphs_vector", VECTOR_ATTRIBUTE);
     program->addBindAttribLocation("osgGlyphs_position", POSITION_ATTRIBUTE);
@@ -286,6 +287,8 @@ osg::StateSet* GlyphStateSets::get(const GlyphVariant& variant)
     }
     if (variant.lit)
         stateSet->setDefine(GLYPH_LIT_DEFINE);
+    if (!variant.compressedAttributes)
+        stateSet->setDefine("OSGGLYPHS_FLOAT_ATTRIBUTES");
     if (variant.colorMode == GlyphColorMode::RGBA)
         stateSet->setDefine(COLOR_RGBA_DEFINE);
     if (variant.colorMode == GlyphColorMode::Scalar)

@@ -32,7 +32,7 @@ namespace
 const char* const PROGRAM = "osgglyphbench";
 
 const char* const CSV_HEADER = "technique,shape,n,width,height,frames,ms_median,ms_min,ms_max,first_frame_ms,"
-                               "gpu_bytes_per_glyph,data_path,coverage,radius";
+                               "gpu_bytes_per_glyph,data_path,coverage,radius,attributes";
 
 /** How vertex data reaches the GPU (paper section 3). */
 enum class DataPath
@@ -80,6 +80,7 @@ struct Settings
     std::string csvFile;
     std::string plotFile;
     DataPath dataPath = DataPath::VBO;
+    bool compressedAttributes = true;
     osgGlyphs::HeadlessBackend backend = osgGlyphs::HeadlessBackend::Default;
 };
 
@@ -181,6 +182,10 @@ void describeOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--data-path <vbo|client-arrays>",
                                "How vertex data reaches the GPU (paper section 3; default vbo). "
                                "display-list is refused: glyph clouds cannot be drawn from display lists.");
+    usage.addCommandLineOption("--attributes <compressed|float>",
+                               "A glyph's radius and scalar as a half float and 16 bits in one word "
+                               "(default), or as two floats (paper section 3; GlyphCloud::"
+                               "setCompressedAttributes).");
     usage.addCommandLineOption("--max-ms <ms>", "Skip the larger n of a technique and shape once its median "
                                                 "frame time exceeds ms (default: no limit).");
     usage.addCommandLineOption("--headless <osmesa|egl>",
@@ -209,7 +214,8 @@ void printHelp(osg::ApplicationUsage& usage)
               << "first_frame_ms includes compiling the shaders; OSGGLYPHS_HEADLESS picks the backend.\n\n";
     usage.write(std::cout, osg::ApplicationUsage::COMMAND_LINE_OPTION);
     std::cout << "\nCSV columns: " << CSV_HEADER << "\n(data_path, coverage, the fraction of the view "
-              << "drawn on, and the glyph radius follow the required columns.)" << std::endl;
+              << "drawn on, the glyph radius and the attribute encoding follow the required columns.)"
+              << std::endl;
 }
 
 /** The --quick preset; options given explicitly override it afterwards. */
@@ -244,6 +250,15 @@ bool readLists(osg::ArgumentParser& arguments, Settings& settings)
         else
             arguments.reportError("--data-path: unknown value '" + text + "' (vbo, client-arrays)");
         return false;
+    }
+    if (arguments.read("--attributes", text))
+    {
+        if (text != "compressed" && text != "float")
+        {
+            arguments.reportError("--attributes: unknown value '" + text + "' (compressed, float)");
+            return false;
+        }
+        settings.compressedAttributes = text == "compressed";
     }
     if (arguments.read("--headless", text) && !osgGlyphs::parseHeadlessBackend(text, settings.backend))
     {
@@ -326,6 +341,7 @@ osg::ref_ptr<osg::Geometry> createDrawable(osgGlyphs::GlyphTechnique technique, 
     if (osgGlyphs::isTechniqueSupported(technique, shape))
     {
         cloud->setTechnique(technique);
+        cloud->setCompressedAttributes(settings.compressedAttributes);
         bytesPerGlyph = cloud->getGPUBytesPerGlyph();
     }
     else // only points-floor gets here
@@ -456,7 +472,7 @@ void writeCsvRow(std::ostream& csv, const Result& result, const Settings& settin
         << format(result.msMedian, 4) << ',' << format(result.msMin, 4) << ',' << format(result.msMax, 4)
         << ',' << format(result.firstFrameMs, 4) << ',' << format(result.bytesPerGlyph, 2) << ','
         << getDataPathName(settings.dataPath) << ',' << format(result.coverage, 4) << ','
-        << format(result.radius, 7) << '\n'
+        << format(result.radius, 7) << ',' << (settings.compressedAttributes ? "compressed" : "float") << '\n'
         << std::flush;
 }
 

@@ -199,4 +199,5 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
     ADD_USER_SERIALIZER(Anchor);
     ADD_USER_SERIALIZER(ArrowHead);
     ADD_USER_SERIALIZER(PolygonResolution);
+    ADD_BOOL_SERIALIZER(CompressedAttributes, true);
 }

@@ -3,14 +3,22 @@
 // osgGlyphs_packed, one 32-bit word per glyph:
 //   bits  0..15  radius / osgGlyphs_radiusScale as an IEEE half float (0: skip the glyph)
 //   bits 16..31  scalar, quantised to 0..65535 over the data's own range
+// osgGlyphs_radiusScalar replaces it with uncompressed attributes (OSGGLYPHS_FLOAT_ATTRIBUTES):
+//   radius / osgGlyphs_radiusScale and the scalar in [0, 1] over the data's range, as floats
 // osgGlyphs_color: RGBA8 per glyph (OSGGLYPHS_COLOR_RGBA only).
 // osgGlyphs_vector: direction and magnitude per glyph (vector shapes only).
 // osgGlyphs_position: the glyph's position, for instanced techniques (else gl_Vertex).
 
+#pragma import_defines(OSGGLYPHS_FLOAT_ATTRIBUTES)
+
 #ifdef OSGGLYPHS_PER_INSTANCE
 in vec3 osgGlyphs_position;
 #endif
+#ifdef OSGGLYPHS_FLOAT_ATTRIBUTES
+in vec2 osgGlyphs_radiusScalar; // the packed word's two values as floats, unrounded
+#else
 in uint osgGlyphs_packed;
+#endif
 #ifdef OSGGLYPHS_COLOR_RGBA
 in vec4 osgGlyphs_color;
 #endif
@@ -36,15 +44,23 @@ float decodeHalf(uint bits)
 
 float glyphRadius()
 {
+#ifdef OSGGLYPHS_FLOAT_ATTRIBUTES
+    return osgGlyphs_radiusScalar.x * osgGlyphs_radiusScale;
+#else
     return decodeHalf(osgGlyphs_packed & 65535u) * osgGlyphs_radiusScale;
+#endif
 }
 
 #ifdef OSGGLYPHS_COLOR_SCALAR
 /** Where the glyph's scalar falls on the colour map, in [0, 1]. */
 float colormapCoordinate()
 {
-    float quantised = float(osgGlyphs_packed >> 16u) * (1.0 / 65535.0);
-    return clamp(quantised * osgGlyphs_scalarToColormap.x + osgGlyphs_scalarToColormap.y, 0.0, 1.0);
+#ifdef OSGGLYPHS_FLOAT_ATTRIBUTES
+    float scalar = osgGlyphs_radiusScalar.y;
+#else
+    float scalar = float(osgGlyphs_packed >> 16u) * (1.0 / 65535.0);
+#endif
+    return clamp(scalar * osgGlyphs_scalarToColormap.x + osgGlyphs_scalarToColormap.y, 0.0, 1.0);
 }
 #endif
 

@@ -176,6 +176,31 @@ TEST_F(GlyphCloudData, RadiiKeepTheirPrecisionAtAnyScale)
     }
 }
 
+TEST_F(GlyphCloudData, UncompressedAttributesKeepNarrowRangesAndRadiiExact)
+{
+    // One outlier widens the data's range: its 16-bit steps (0.015) are wider than the colour
+    // range, so compressed scalars all land on one colour; floats resolve them.
+    osg::ref_ptr<GlyphCloud> cloud = createScalarRow({0.5f, 0.5004f, 0.5008f, 1000.0f});
+    cloud->setScalarRange(0.5f, 0.5008f);
+    const ColorMap* viridis = ColorMap::getBuiltin("viridis");
+    osg::ref_ptr<osg::Node> scene = group({cloud.get()});
+    const std::vector<osg::Vec4ub> compressed = centreColours(renderer.render(scene.get()), *cloud);
+    EXPECT_NE(labelOfColor(compressed[1], {toBytes(viridis->getColor(0.5f))}, 2), 0) << "banding when packed";
+
+    cloud->setCompressedAttributes(false);
+    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 20.0) << "position + radius and scalar as floats";
+    const std::vector<osg::Vec4ub> uncompressed = centreColours(renderer.render(scene.get()), *cloud);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_EQ(labelOfColor(uncompressed[i], {toBytes(viridis->getColor(0.5f * i))}, 2), 0)
+            << "glyph " << i;
+
+    // Radii keep every bit: the bounding box is exact, where a half float is off by 1e-4.
+    cloud->setRadii(makeArray<osg::FloatArray>({0.3001f, 1.7f, 1.7f, 1.7f}));
+    EXPECT_NEAR(cloud->getBoundingBox().xMin(), -2.5f - 0.3001f, 1e-6f);
+    cloud->setCompressedAttributes(true);
+    EXPECT_GT(std::fabs(cloud->getBoundingBox().xMin() - (-2.5f - 0.3001f)), 1e-5f);
+}
+
 TEST_F(GlyphCloudData, GlyphsReachingIntoTheViewAreNotCulled)
 {
     // The centre lies outside the view frustum; only the radius brings the sphere into view.

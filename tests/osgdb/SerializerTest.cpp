@@ -32,6 +32,7 @@ osg::ref_ptr<GlyphCloud> createFullCloud()
         "custom", {osg::Vec4(0.1f, 0.2f, 0.3f, 1.0f), osg::Vec4(0.9f, 0.5f, 0.1f, 1.0f)}));
     cloud->setScalarRange(-1.0f, 5.0f);
     cloud->setLit(false);
+    cloud->setCompressedAttributes(false);
     cloud->setMaterial(0.31f, 0.27f, 17.0f);
     cloud->setLengthScale(0.75f);
     cloud->setUniformLength(true);
@@ -68,6 +69,7 @@ void expectSameCloud(const GlyphCloud& a, const GlyphCloud& b)
     EXPECT_EQ(a.getScalarRangeMin(), b.getScalarRangeMin());
     EXPECT_EQ(a.getScalarRangeMax(), b.getScalarRangeMax());
     EXPECT_EQ(a.getLit(), b.getLit());
+    EXPECT_EQ(a.getCompressedAttributes(), b.getCompressedAttributes());
     EXPECT_EQ(a.getAmbient(), b.getAmbient());
     EXPECT_EQ(a.getSpecular(), b.getSpecular());
     EXPECT_EQ(a.getShininess(), b.getShininess());
