@@ -322,7 +322,10 @@ void GlyphCloud::setScalarRange(float min, float max)
     _autoRange = false;
     _rangeMin = min;
     _rangeMax = max;
-    updateScalarMapping();
+    if (updateQuantisationRange() && _scalars.valid())
+        updatePackedAttributes(); // the 16 bits now span another interval
+    else
+        updateScalarMapping();
 }
 
 void GlyphCloud::resetScalarRange()
@@ -330,7 +333,10 @@ void GlyphCloud::resetScalarRange()
     _autoRange = true;
     _rangeMin = _dataMin;
     _rangeMax = _dataMax;
-    updateScalarMapping();
+    if (updateQuantisationRange() && _scalars.valid())
+        updatePackedAttributes();
+    else
+        updateScalarMapping();
 }
 
 void GlyphCloud::setLit(bool lit)
@@ -385,7 +391,7 @@ void GlyphCloud::updatePackedAttributes()
         limit(_vectors.get(), "vector");
     }
 
-    // The range the scalars are quantised over: their finite minimum and maximum.
+    // The scalars' finite minimum and maximum.
     _dataMin = std::numeric_limits<float>::max();
     _dataMax = std::numeric_limits<float>::lowest();
     if (_scalars.valid())
@@ -402,6 +408,12 @@ void GlyphCloud::updatePackedAttributes()
     }
     if (_dataMin > _dataMax)
         _dataMin = _dataMax = 0.0f;
+    if (_autoRange)
+    {
+        _rangeMin = _dataMin;
+        _rangeMax = _dataMax;
+    }
+    updateQuantisationRange();
 
     // Radii are stored relative to the largest, which keeps half floats precise at any scale.
     _radiusScale = _radius;
@@ -418,7 +430,7 @@ void GlyphCloud::updatePackedAttributes()
 
     unsigned int badPositions = 0, badRadii = 0, badScalars = 0, badVectors = 0, zeroVectors = 0;
     const double quantisationScale =
-        _dataMax > _dataMin ? 65535.0 / (double(_dataMax) - double(_dataMin)) : 0.0;
+        _quantisedMax > _quantisedMin ? 65535.0 / (double(_quantisedMax) - double(_quantisedMin)) : 0.0;
     std::vector<uint32_t> packed(count);
     for (size_t i = 0; i < count; ++i)
     {
@@ -435,7 +447,8 @@ void GlyphCloud::updatePackedAttributes()
         {
             const float s = (*_scalars)[i];
             if (std::isfinite(s))
-                quantised = static_cast<uint32_t>(std::lround((double(s) - _dataMin) * quantisationScale));
+                quantised = static_cast<uint32_t>(
+                    std::lround(std::clamp((double(s) - _quantisedMin) * quantisationScale, 0.0, 65535.0)));
             else
             {
                 ++badScalars;
@@ -491,11 +504,6 @@ void GlyphCloud::updatePackedAttributes()
                  << " glyphs have a zero vector and no direction; they are not drawn" << std::endl;
 
     _radiusScaleUniform->set(_radiusScale);
-    if (_autoRange)
-    {
-        _rangeMin = _dataMin;
-        _rangeMax = _dataMax;
-    }
     updateScalarMapping();
     configureDrawing();
 }
@@ -508,9 +516,9 @@ void GlyphCloud::updateUnpackedAttributes(const std::vector<uint32_t>& packed)
         _unpacked->trim();
         return;
     }
-    // The packed values without their rounding: radius / radius scale, scalar in [0, 1] over the data's
-    // range.
-    const double span = double(_dataMax) - double(_dataMin);
+    // The packed values without their rounding: radius / radius scale, and the scalar in [0, 1]
+    // over the quantisation range (beyond it where the data is).
+    const double span = double(_quantisedMax) - double(_quantisedMin);
     std::vector<osg::Vec2> unpacked(packed.size());
     for (size_t i = 0; i < packed.size(); ++i)
     {
@@ -518,7 +526,7 @@ void GlyphCloud::updateUnpackedAttributes(const std::vector<uint32_t>& packed)
             continue; // not drawn: radius 0
         const float relative = _radii.valid() ? (*_radii)[i] / _radiusScale : 1.0f;
         const float scalar = _scalars.valid() && span > 0.0
-                                 ? static_cast<float>(((*_scalars)[i] - double(_dataMin)) / span)
+                                 ? static_cast<float>(((*_scalars)[i] - double(_quantisedMin)) / span)
                                  : 0.0f;
         unpacked[i].set(relative, scalar);
     }
@@ -529,15 +537,32 @@ void GlyphCloud::updateUnpackedAttributes(const std::vector<uint32_t>& packed)
     }
 }
 
+bool GlyphCloud::updateQuantisationRange()
+{
+    // The data's range, narrowed to the colour range where that is narrower: values beyond the
+    // colour range clamp to the same colour anyway, and the 16 bits span what is seen.
+    float lo = _dataMin, hi = _dataMax;
+    const float rangeLo = std::min(_rangeMin, _rangeMax), rangeHi = std::max(_rangeMin, _rangeMax);
+    if (std::isfinite(rangeLo) && std::isfinite(rangeHi) && std::max(lo, rangeLo) < std::min(hi, rangeHi))
+    {
+        lo = std::max(lo, rangeLo);
+        hi = std::min(hi, rangeHi);
+    }
+    const bool changed = lo != _quantisedMin || hi != _quantisedMax;
+    _quantisedMin = lo;
+    _quantisedMax = hi;
+    return changed;
+}
+
 void GlyphCloud::updateScalarMapping()
 {
     // colormap coordinate = (value - rangeMin) / (rangeMax - rangeMin), where
-    // value = dataMin + quantised * (dataMax - dataMin) and quantised is in [0, 1].
+    // value = quantisedMin + quantised * (quantisedMax - quantisedMin) and quantised is in [0, 1].
     const double span = double(_rangeMax) - double(_rangeMin);
     osg::Vec2 mapping(0.0f, 0.5f);
     if (span != 0.0 && std::isfinite(span))
-        mapping.set(static_cast<float>((double(_dataMax) - _dataMin) / span),
-                    static_cast<float>((double(_dataMin) - _rangeMin) / span));
+        mapping.set(static_cast<float>((double(_quantisedMax) - _quantisedMin) / span),
+                    static_cast<float>((double(_quantisedMin) - _rangeMin) / span));
     _scalarToColormapUniform->set(mapping);
 }
 

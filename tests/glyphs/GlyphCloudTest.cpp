@@ -176,29 +176,55 @@ TEST_F(GlyphCloudData, RadiiKeepTheirPrecisionAtAnyScale)
     }
 }
 
-TEST_F(GlyphCloudData, UncompressedAttributesKeepNarrowRangesAndRadiiExact)
+TEST_F(GlyphCloudData, NarrowColourRangesKeepTheirResolution)
 {
-    // One outlier widens the data's range: its 16-bit steps (0.015) are wider than the colour
-    // range, so compressed scalars all land on one colour; floats resolve them.
+    // One outlier stretches the data's range: over it, 16-bit steps (0.015) would be wider than
+    // the colour range. Scalars are quantised over the colour range instead, and re-packed
+    // when it changes.
     osg::ref_ptr<GlyphCloud> cloud = createScalarRow({0.5f, 0.5004f, 0.5008f, 1000.0f});
     cloud->setScalarRange(0.5f, 0.5008f);
     const ColorMap* viridis = ColorMap::getBuiltin("viridis");
     osg::ref_ptr<osg::Node> scene = group({cloud.get()});
-    const std::vector<osg::Vec4ub> compressed = centreColours(renderer.render(scene.get()), *cloud);
-    EXPECT_NE(labelOfColor(compressed[1], {toBytes(viridis->getColor(0.5f))}, 2), 0) << "banding when packed";
+    for (bool compressed : {true, false})
+    {
+        cloud->setCompressedAttributes(compressed);
+        const std::vector<osg::Vec4ub> colours = centreColours(renderer.render(scene.get()), *cloud);
+        for (int i = 0; i < 3; ++i)
+            EXPECT_EQ(labelOfColor(colours[i], {toBytes(viridis->getColor(0.5f * i))}, 2), 0)
+                << "glyph " << i << (compressed ? ", compressed" : ", uncompressed");
+    }
+    cloud->setCompressedAttributes(true);
+    cloud->resetScalarRange();
+    const std::vector<osg::Vec4ub> colours = centreColours(renderer.render(scene.get()), *cloud);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_EQ(labelOfColor(colours[i], {toBytes(viridis->getColor(0.0f))}, 2), 0) << "glyph " << i;
+}
+
+TEST_F(GlyphCloudData, UncompressedRadiiAreExact)
+{
+    // 0.7001 of the largest radius is 0.7002 as a half float: 1e-4 off, a hundred 24-bit depth
+    // steps at the sphere's front. As floats the depth is exact.
+    const std::vector<SphereSpec> spheres = {
+        {osg::Vec3(-2.0f, 0.0f, 0.0f), 1.0f, osg::Vec4ub(255, 0, 0, 255)},
+        {osg::Vec3(1.5f, 0.0f, 0.0f), 0.7001f, osg::Vec4ub(0, 255, 0, 255)}};
+    AnalyticScene truth;
+    addSpheres(truth, spheres);
+    osg::ref_ptr<GlyphCloud> cloud = createSphereCloud(spheres);
+    const std::vector<osg::Vec4ub> palette = {spheres[0].color, spheres[1].color};
+    const double exactDepth = 2.5e-7; // 4 steps of a 24-bit depth buffer
+
+    const Agreement compressed =
+        compareWithTruth(renderer.render(group({cloud.get()}).get()), truth, palette, exactDepth);
+    EXPECT_GT(compressed.wrongDepth, 100) << "half-float radii are rounded";
 
     cloud->setCompressedAttributes(false);
-    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 20.0) << "position + radius and scalar as floats";
-    const std::vector<osg::Vec4ub> uncompressed = centreColours(renderer.render(scene.get()), *cloud);
-    for (int i = 0; i < 3; ++i)
-        EXPECT_EQ(labelOfColor(uncompressed[i], {toBytes(viridis->getColor(0.5f * i))}, 2), 0)
-            << "glyph " << i;
-
-    // Radii keep every bit: the bounding box is exact, where a half float is off by 1e-4.
-    cloud->setRadii(makeArray<osg::FloatArray>({0.3001f, 1.7f, 1.7f, 1.7f}));
-    EXPECT_NEAR(cloud->getBoundingBox().xMin(), -2.5f - 0.3001f, 1e-6f);
-    cloud->setCompressedAttributes(true);
-    EXPECT_GT(std::fabs(cloud->getBoundingBox().xMin() - (-2.5f - 0.3001f)), 1e-5f);
+    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 24.0) << "position + RGBA8 + radius and scalar as floats";
+    const Agreement exact =
+        compareWithTruth(renderer.render(group({cloud.get()}).get()), truth, palette, exactDepth);
+    EXPECT_GT(exact.covered, 1000);
+    EXPECT_EQ(exact.wrongLabel, 0);
+    EXPECT_EQ(exact.wrongDepth, 0) << "worst depth error " << exact.worstDepthError;
+    EXPECT_NEAR(cloud->getBoundingBox().xMax(), 1.5f + 0.7001f, 1e-6f);
 }
 
 TEST_F(GlyphCloudData, GlyphsReachingIntoTheViewAreNotCulled)
