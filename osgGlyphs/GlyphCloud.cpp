@@ -323,7 +323,7 @@ void GlyphCloud::setScalarRange(float min, float max)
     _rangeMin = min;
     _rangeMax = max;
     if (updateQuantisationRange() && _scalars.valid())
-        updatePackedAttributes(); // the 16 bits now span another interval
+        updatePackedAttributes(false); // the 16 bits now span another interval
     else
         updateScalarMapping();
 }
@@ -334,7 +334,7 @@ void GlyphCloud::resetScalarRange()
     _rangeMin = _dataMin;
     _rangeMax = _dataMax;
     if (updateQuantisationRange() && _scalars.valid())
-        updatePackedAttributes();
+        updatePackedAttributes(false);
     else
         updateScalarMapping();
 }
@@ -348,7 +348,7 @@ void GlyphCloud::setLit(bool lit)
 void GlyphCloud::setCompressedAttributes(bool compressed)
 {
     _compressedAttributes = compressed;
-    updatePackedAttributes();
+    updatePackedAttributes(false);
     updateStateSet();
 }
 
@@ -364,7 +364,7 @@ void GlyphCloud::dirtyGlyphs()
     dirtyBound();
 }
 
-void GlyphCloud::updatePackedAttributes()
+void GlyphCloud::updatePackedAttributes(bool reportSkipped)
 {
     const size_t numPositions = _positions.valid() ? _positions->size() : 0;
     size_t count = numPositions;
@@ -372,10 +372,11 @@ void GlyphCloud::updatePackedAttributes()
     {
         if (array && array->getNumElements() != numPositions)
         {
-            OSG_WARN << "osgGlyphs::GlyphCloud \"" << getName() << "\": the " << what << " array has "
-                     << array->getNumElements() << " values for " << numPositions
-                     << " positions; only the first " << std::min<size_t>(count, array->getNumElements())
-                     << " glyphs are drawn" << std::endl;
+            if (reportSkipped)
+                OSG_WARN << "osgGlyphs::GlyphCloud \"" << getName() << "\": the " << what << " array has "
+                         << array->getNumElements() << " values for " << numPositions
+                         << " positions; only the first " << std::min<size_t>(count, array->getNumElements())
+                         << " glyphs are drawn" << std::endl;
             count = std::min<size_t>(count, array->getNumElements());
         }
     };
@@ -490,7 +491,7 @@ void GlyphCloud::updatePackedAttributes()
 
     auto report = [&](unsigned int bad, const char* problem)
     {
-        if (bad)
+        if (bad && reportSkipped)
             OSG_WARN << "osgGlyphs::GlyphCloud \"" << getName() << "\": " << bad << " of " << count
                      << " glyphs " << problem << "; they are skipped" << std::endl;
     };
@@ -499,7 +500,7 @@ void GlyphCloud::updatePackedAttributes()
            "have a radius that is not finite and > 0");
     report(badScalars, "have a non-finite scalar (NaN or inf)");
     report(badVectors, "have a non-finite vector (NaN or inf)");
-    if (zeroVectors)
+    if (zeroVectors && reportSkipped)
         OSG_INFO << "osgGlyphs::GlyphCloud \"" << getName() << "\": " << zeroVectors << " of " << count
                  << " glyphs have a zero vector and no direction; they are not drawn" << std::endl;
 

@@ -304,6 +304,13 @@ TEST_F(GlyphCloudData, InvalidGlyphsAreSkippedWithAWarning)
     EXPECT_EQ(cloud->getNumGlyphs(), 6u);
     EXPECT_EQ(cloud->getNumSkippedGlyphs(), 5u);
 
+    // A new colour range or encoding re-packs the same data: nothing new to warn about.
+    capture = new NotifyCapture;
+    cloud->setScalarRange(2.0f, 3.0f);
+    cloud->setCompressedAttributes(false);
+    EXPECT_EQ(capture->stop(), "");
+    EXPECT_EQ(cloud->getNumSkippedGlyphs(), 5u);
+
     // Only the valid glyph at (-2, 0, 0) is drawn, and the bounds ignore the rest.
     const osg::BoundingBox box = cloud->getBoundingBox();
     EXPECT_FLOAT_EQ(box.xMin(), -2.5f);
