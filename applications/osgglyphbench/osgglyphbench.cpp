@@ -706,22 +706,37 @@ std::vector<Case> listCases(const Settings& settings)
     return cases;
 }
 
+/** Measures one case; false without a headless context. The renderer string is filled in. */
+bool measureCase(const Case& c, float radius, const Settings& settings, Result& result, std::string& renderer)
+{
+    result = Result{c.technique, c.shape, c.n, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, radius};
+    osg::ref_ptr<osg::Geode> scene = new osg::Geode;
+    scene->addDrawable(
+        createDrawable(c.technique, c.shape, c.n, radius, settings, result.bytesPerGlyph).get());
+    std::vector<double> frameMs;
+    osg::ref_ptr<osgGlyphs::OffscreenViewer> viewer;
+    if (!measure(settings, scene.get(), result.firstFrameMs, frameMs, viewer))
+        return false;
+    result.msMedian = median(frameMs);
+    result.msMin = *std::min_element(frameMs.begin(), frameMs.end());
+    result.msMax = *std::max_element(frameMs.begin(), frameMs.end());
+    result.coverage = getCoverage(*viewer->getColorImage());
+    renderer = viewer->getFrameCapture()->getGLRenderer();
+    return true;
+}
+
 /** The fraction of the view that n glyphs of this shape and radius cover in one untimed frame of
  * the default technique; negative without a headless context. */
 double measureCoverage(osgGlyphs::GlyphShape shape, unsigned int n, float radius, const Settings& settings)
 {
     Settings once = settings;
     once.frames = 1;
-    double bytesPerGlyph = 0.0, firstFrameMs = 0.0;
-    osg::ref_ptr<osg::Geode> scene = new osg::Geode;
-    scene->addDrawable(
-        createDrawable(osgGlyphs::GlyphTechnique::GeometryShader, shape, n, radius, once, bytesPerGlyph)
-            .get());
-    std::vector<double> frameMs;
-    osg::ref_ptr<osgGlyphs::OffscreenViewer> viewer;
-    if (!measure(once, scene.get(), firstFrameMs, frameMs, viewer))
+    Result result;
+    std::string renderer;
+    if (!measureCase(Case{osgGlyphs::GlyphTechnique::GeometryShader, shape, n}, radius, once, result,
+                     renderer))
         return -1.0;
-    return getCoverage(*viewer->getColorImage());
+    return result.coverage;
 }
 
 /** The glyph radius of a case: --radius or getDefaultRandomRadius(n); with --equal-coverage, a
@@ -757,25 +772,6 @@ float getCaseRadius(const Case& c, const Settings& settings,
               << format(scaled / radius, 3) << " x the spheres', covering " << format(100.0 * coverage, 1)
               << "% of the view (spheres: " << format(100.0 * target, 1) << "%)" << std::endl;
     return cache[key] = static_cast<float>(scaled);
-}
-
-/** Measures one case; false without a headless context. The renderer string is filled in. */
-bool measureCase(const Case& c, float radius, const Settings& settings, Result& result, std::string& renderer)
-{
-    result = Result{c.technique, c.shape, c.n, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, radius};
-    osg::ref_ptr<osg::Geode> scene = new osg::Geode;
-    scene->addDrawable(
-        createDrawable(c.technique, c.shape, c.n, radius, settings, result.bytesPerGlyph).get());
-    std::vector<double> frameMs;
-    osg::ref_ptr<osgGlyphs::OffscreenViewer> viewer;
-    if (!measure(settings, scene.get(), result.firstFrameMs, frameMs, viewer))
-        return false;
-    result.msMedian = median(frameMs);
-    result.msMin = *std::min_element(frameMs.begin(), frameMs.end());
-    result.msMax = *std::max_element(frameMs.begin(), frameMs.end());
-    result.coverage = getCoverage(*viewer->getColorImage());
-    renderer = viewer->getFrameCapture()->getGLRenderer();
-    return true;
 }
 
 /** The cost of a frame that draws nothing: clearing and reading the colour buffer back. */

@@ -96,6 +96,27 @@ Agreement compareWithTruth(const Frame& frame, const AnalyticScene& truth,
     return result;
 }
 
+CentreAgreement compareEveryPixelCentre(const Frame& frame, const AnalyticScene& truth,
+                                        const std::vector<osg::Vec4ub>& palette, double depthTolerance)
+{
+    CentreAgreement result;
+    for (int y = 0; y < frame.height(); ++y)
+    {
+        for (int x = 0; x < frame.width(); ++x)
+        {
+            const RayHit hit = truth.castPixel(frame, x, y);
+            result.hits += hit.hit() ? 1 : 0;
+            result.wrongCoverage += hit.hit() != frame.isCovered(x, y) ? 1 : 0;
+            if (!hit.hit() || !frame.isCovered(x, y))
+                continue;
+            result.wrongLabel += labelOfColor(frame.colorAt(x, y), palette) != hit.label ? 1 : 0;
+            result.wrongDepth +=
+                std::fabs(frame.depthAt(x, y) - frame.windowDepth(hit.point)) > depthTolerance ? 1 : 0;
+        }
+    }
+    return result;
+}
+
 NotifyCapture::NotifyCapture() : _previous(osg::getNotifyHandler())
 {
     osg::setNotifyHandler(this);

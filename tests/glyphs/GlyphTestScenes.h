@@ -65,6 +65,20 @@ Agreement compareWithTruth(const Frame& frame, const AnalyticScene& truth,
                            const std::vector<osg::Vec4ub>& palette, double depthTolerance,
                            double grazingCosine = 0.0);
 
+/** Every pixel centre's ray against the frame, for glyphs too small for certain labels: how
+ * many centres hit the analytic scene, and how many are covered when they should not be (or
+ * not when they should), show the wrong colour, or have a depth beyond depthTolerance. */
+struct CentreAgreement
+{
+    int hits = 0;
+    int wrongCoverage = 0;
+    int wrongLabel = 0;
+    int wrongDepth = 0;
+};
+
+CentreAgreement compareEveryPixelCentre(const Frame& frame, const AnalyticScene& truth,
+                                        const std::vector<osg::Vec4ub>& palette, double depthTolerance);
+
 /** Collects OSG's warnings from construction until stop(). Create it with new. */
 class NotifyCapture : public osg::NotifyHandler
 {

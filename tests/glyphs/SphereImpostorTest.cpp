@@ -91,24 +91,11 @@ TEST_F(SphereImpostor, SubPixelSpheresHitExactlyThePixelCentresTheyCover)
     const Frame frame = renderer.render(group({createSphereCloud(spheres).get()}).get());
 
     // Too small for compareWithTruth's certain pixels: compare every pixel centre's ray.
-    int hits = 0, wrongCoverage = 0, wrongLabel = 0, wrongDepth = 0;
-    for (int y = 0; y < frame.height(); ++y)
-    {
-        for (int x = 0; x < frame.width(); ++x)
-        {
-            const RayHit hit = truth.castPixel(frame, x, y);
-            hits += hit.hit() ? 1 : 0;
-            wrongCoverage += hit.hit() != frame.isCovered(x, y) ? 1 : 0;
-            if (!hit.hit() || !frame.isCovered(x, y))
-                continue;
-            wrongLabel += labelOfColor(frame.colorAt(x, y), palette) != hit.label ? 1 : 0;
-            wrongDepth += std::fabs(frame.depthAt(x, y) - frame.windowDepth(hit.point)) > EXACT_DEPTH ? 1 : 0;
-        }
-    }
-    EXPECT_GT(hits, 300);
-    EXPECT_EQ(wrongCoverage, 0) << "of " << hits << " pixel centres on a sphere";
-    EXPECT_EQ(wrongLabel, 0);
-    EXPECT_EQ(wrongDepth, 0);
+    const CentreAgreement agreement = compareEveryPixelCentre(frame, truth, palette, EXACT_DEPTH);
+    EXPECT_GT(agreement.hits, 300);
+    EXPECT_EQ(agreement.wrongCoverage, 0) << "of " << agreement.hits << " pixel centres on a sphere";
+    EXPECT_EQ(agreement.wrongLabel, 0);
+    EXPECT_EQ(agreement.wrongDepth, 0);
 }
 
 TEST_F(SphereImpostor, DepthMatchesAFinelyTessellatedFixedFunctionSphere)
