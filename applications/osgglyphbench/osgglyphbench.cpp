@@ -3,9 +3,9 @@
 // second of every glyph technique for random clouds of 100 to 1,000,000 glyphs, headless.
 
 #include <osgGlyphs/GlyphCloud>
-#include <osgGlyphs/OffscreenViewer>
-#include <osgGlyphs/RandomCloud>
 #include <osgGlyphs/Version>
+#include <osgGlyphsData/RandomCloud>
+#include <osgGlyphsHeadless/OffscreenViewer>
 
 #include <osg/ArgumentParser>
 #include <osg/Geode>
@@ -81,7 +81,7 @@ struct Settings
     std::string plotFile;
     DataPath dataPath = DataPath::VBO;
     bool compressedAttributes = true;
-    osgGlyphs::HeadlessBackend backend = osgGlyphs::HeadlessBackend::Default;
+    osgGlyphsHeadless::HeadlessBackend backend = osgGlyphsHeadless::HeadlessBackend::Default;
 };
 
 /** One measured case: a row of the CSV. */
@@ -260,7 +260,8 @@ bool readLists(osg::ArgumentParser& arguments, Settings& settings)
         }
         settings.compressedAttributes = text == "compressed";
     }
-    if (arguments.read("--headless", text) && !osgGlyphs::parseHeadlessBackend(text, settings.backend))
+    if (arguments.read("--headless", text) &&
+        !osgGlyphsHeadless::parseHeadlessBackend(text, settings.backend))
     {
         arguments.reportError("--headless: unknown backend '" + text + "' (osmesa, egl)");
         return false;
@@ -331,12 +332,12 @@ osg::ref_ptr<osg::Geometry> createDrawable(osgGlyphs::GlyphTechnique technique, 
                                            unsigned int n, float radius, const Settings& settings,
                                            double& bytesPerGlyph)
 {
-    osgGlyphs::RandomCloudOptions options;
+    osgGlyphsData::RandomCloudOptions options;
     options.count = n;
     options.seed = settings.seed;
     options.shape = shape;
     options.radius = radius;
-    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphs::createRandomCloud(options);
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(options);
     osg::ref_ptr<osg::Geometry> drawable = cloud;
     if (osgGlyphs::isTechniqueSupported(technique, shape))
     {
@@ -358,7 +359,7 @@ osg::ref_ptr<osg::Geometry> createDrawable(osgGlyphs::GlyphTechnique technique, 
 
 /** Looks at the unit cube's centre from a distance that fits its bounding sphere into the
  * viewer's 30 degree field of view, orbiting 1 degree per frame. */
-void placeCamera(osgGlyphs::OffscreenViewer& viewer, unsigned int frame)
+void placeCamera(osgGlyphsHeadless::OffscreenViewer& viewer, unsigned int frame)
 {
     const osg::Vec3d centre(0.5, 0.5, 0.5);
     const double distance = 0.5 * std::sqrt(3.0) / std::sin(osg::DegreesToRadians(15.0));
@@ -370,7 +371,7 @@ void placeCamera(osgGlyphs::OffscreenViewer& viewer, unsigned int frame)
                                               osg::Vec3d(0.0, 0.0, 1.0));
 }
 
-double timeFrame(osgGlyphs::OffscreenViewer& viewer, unsigned int frame)
+double timeFrame(osgGlyphsHeadless::OffscreenViewer& viewer, unsigned int frame)
 {
     placeCamera(viewer, frame);
     const auto start = std::chrono::steady_clock::now();
@@ -399,10 +400,10 @@ double getCoverage(const osg::Image& image)
 }
 
 /** A fresh viewer of the settings' size, realized, reading back colour only. */
-osg::ref_ptr<osgGlyphs::OffscreenViewer> createViewer(const Settings& settings, osg::Node* scene)
+osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> createViewer(const Settings& settings, osg::Node* scene)
 {
-    osg::ref_ptr<osgGlyphs::OffscreenViewer> viewer =
-        new osgGlyphs::OffscreenViewer(settings.width, settings.height, settings.backend);
+    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer =
+        new osgGlyphsHeadless::OffscreenViewer(settings.width, settings.height, settings.backend);
     if (!viewer->valid())
         return nullptr;
     viewer->getFrameCapture()->setCaptureDepth(false);
@@ -414,7 +415,7 @@ osg::ref_ptr<osgGlyphs::OffscreenViewer> createViewer(const Settings& settings, 
 
 /** Times one warm-up frame and then settings.frames frames; false without a context. */
 bool measure(const Settings& settings, osg::Node* scene, double& firstFrameMs, std::vector<double>& frameMs,
-             osg::ref_ptr<osgGlyphs::OffscreenViewer>& viewer)
+             osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer>& viewer)
 {
     viewer = createViewer(settings, scene);
     if (!viewer)
@@ -714,7 +715,7 @@ bool measureCase(const Case& c, float radius, const Settings& settings, Result& 
     scene->addDrawable(
         createDrawable(c.technique, c.shape, c.n, radius, settings, result.bytesPerGlyph).get());
     std::vector<double> frameMs;
-    osg::ref_ptr<osgGlyphs::OffscreenViewer> viewer;
+    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer;
     if (!measure(settings, scene.get(), result.firstFrameMs, frameMs, viewer))
         return false;
     result.msMedian = median(frameMs);
@@ -746,7 +747,8 @@ double measureCoverage(osgGlyphs::GlyphShape shape, unsigned int n, float radius
 float getCaseRadius(const Case& c, const Settings& settings,
                     std::map<std::pair<int, unsigned int>, float>& cache)
 {
-    const float radius = settings.radius > 0.0f ? settings.radius : osgGlyphs::getDefaultRandomRadius(c.n);
+    const float radius =
+        settings.radius > 0.0f ? settings.radius : osgGlyphsData::getDefaultRandomRadius(c.n);
     if (!settings.equalCoverage || c.shape == osgGlyphs::GlyphShape::Sphere)
         return radius;
     const std::pair<int, unsigned int> key(static_cast<int>(c.shape), c.n);
@@ -779,7 +781,7 @@ void printFrameOverhead(const Settings& settings)
 {
     double firstFrameMs = 0.0;
     std::vector<double> frameMs;
-    osg::ref_ptr<osgGlyphs::OffscreenViewer> viewer;
+    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer;
     osg::ref_ptr<osg::Group> empty = new osg::Group;
     if (measure(settings, empty.get(), firstFrameMs, frameMs, viewer))
         std::cout << "Empty frame (clear + colour read-back, " << settings.width << "x" << settings.height

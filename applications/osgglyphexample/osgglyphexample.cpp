@@ -9,7 +9,7 @@
 
 #include <osgGlyphs/ColorMap>
 #include <osgGlyphs/GlyphCloud>
-#include <osgGlyphs/OffscreenViewer>
+#include <osgGlyphsHeadless/OffscreenViewer>
 
 #include <osg/ArgumentParser>
 #include <osg/Geode>
@@ -71,7 +71,8 @@ osg::ref_ptr<osg::Node> createScene()
 // OpenGL context (OSMesa or EGL, no display or GPU needed) and reads every frame back.
 int renderToFile(osg::Node* scene, const std::string& path, int width, int height)
 {
-    osg::ref_ptr<osgGlyphs::OffscreenViewer> viewer = new osgGlyphs::OffscreenViewer(width, height);
+    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer =
+        new osgGlyphsHeadless::OffscreenViewer(width, height);
     if (!viewer->valid())
     {
         std::cerr << "osgglyphexample: no headless OpenGL context (OSMesa or EGL)" << std::endl;

@@ -1,6 +1,6 @@
 #include "BuiltinScenes.h"
 
-#include <osgGlyphs/RandomCloud>
+#include <osgGlyphsData/RandomCloud>
 
 #include <osg/Geode>
 #include <osg/ShapeDrawable>
@@ -12,7 +12,7 @@ namespace
 {
 
 /** Column options need a file: refuses them for the scenes without one. */
-bool checkNoColumnOptions(const osgGlyphs::GlyphMappingOptions& mapping, const char* scene,
+bool checkNoColumnOptions(const osgGlyphsData::GlyphMappingOptions& mapping, const char* scene,
                           std::string& error)
 {
     const char* option = !mapping.positionColumns.empty() ? "--position"
@@ -25,18 +25,18 @@ bool checkNoColumnOptions(const osgGlyphs::GlyphMappingOptions& mapping, const c
     return option == nullptr;
 }
 
-osg::ref_ptr<ViewerScene> createFixedScene(osg::Node* content, const osgGlyphs::ColorKey& key)
+osg::ref_ptr<ViewerScene> createFixedScene(osg::Node* content, const osgGlyphsData::ColorKey& key)
 {
     osg::ref_ptr<osg::Node> node = content;
     ViewerScene::FrameSource source = [node](std::size_t, std::string&) { return node; };
     return new ViewerScene(source, 1, key);
 }
 
-osgGlyphs::ColorKey makeScalarKey(const std::string& title, const osgGlyphs::GlyphMappingOptions& mapping,
-                                  float min, float max)
+osgGlyphsData::ColorKey makeScalarKey(const std::string& title,
+                                      const osgGlyphsData::GlyphMappingOptions& mapping, float min, float max)
 {
-    osgGlyphs::ColorKey key;
-    key.kind = osgGlyphs::ColorKey::Scalar;
+    osgGlyphsData::ColorKey key;
+    key.kind = osgGlyphsData::ColorKey::Scalar;
     key.title = title;
     key.colorMap = mapping.colorMap;
     key.min = mapping.hasRange ? mapping.rangeMin : min;
@@ -76,7 +76,7 @@ osg::ref_ptr<ViewerScene> createDefaultScene(const ViewerOptions& options, std::
     else
         cloud->setRadii(radii.get());
     cloud->setScalars(scalars.get());
-    osgGlyphs::applyGlyphStyle(*cloud, options.mapping);
+    osgGlyphsData::applyGlyphStyle(*cloud, options.mapping);
 
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     geode->addDrawable(cloud.get());
@@ -105,14 +105,14 @@ osg::ref_ptr<ViewerScene> createRandomScene(const ViewerOptions& options, std::s
 {
     if (!checkNoColumnOptions(options.mapping, "random", error))
         return nullptr;
-    osgGlyphs::RandomCloudOptions random;
+    osgGlyphsData::RandomCloudOptions random;
     random.count = options.randomCount;
     random.seed = options.seed;
     random.shape = options.mapping.shape;
     random.radius = options.mapping.radius;
     random.lengthScale = options.mapping.lengthScale;
-    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphs::createRandomCloud(random);
-    osgGlyphs::applyGlyphStyle(*cloud, options.mapping);
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(random);
+    osgGlyphsData::applyGlyphStyle(*cloud, options.mapping);
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     geode->addDrawable(cloud.get());
     osg::ref_ptr<ViewerScene> scene =

@@ -9,7 +9,7 @@
  * height, cutting through a fixed-function box and sphere, seen from its own view. */
 osg::ref_ptr<ViewerScene> createDefaultScene(const ViewerOptions& options, std::string& error);
 
-/** --random N: osgGlyphs::createRandomCloud, the random dataset of the paper's benchmarks. */
+/** --random N: osgGlyphsData::createRandomCloud, the random dataset of the paper's benchmarks. */
 osg::ref_ptr<ViewerScene> createRandomScene(const ViewerOptions& options, std::string& error);
 
 #endif

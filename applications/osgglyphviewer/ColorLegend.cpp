@@ -54,10 +54,10 @@ public:
         _outlineColor = osg::Vec4(background.r(), background.g(), background.b(), 1.0f);
     }
 
-    osg::ref_ptr<osg::Geode> build(const osgGlyphs::ColorKey& key)
+    osg::ref_ptr<osg::Geode> build(const osgGlyphsData::ColorKey& key)
     {
         addText(key.title, osg::Vec3(_right, _top + 0.5f * _size, 0.0f), osgText::Text::RIGHT_BOTTOM);
-        if (key.kind == osgGlyphs::ColorKey::Scalar)
+        if (key.kind == osgGlyphsData::ColorKey::Scalar)
             addBar(key);
         else
             addCategories(key);
@@ -112,7 +112,7 @@ protected:
         _geode->addDrawable(geometry.get());
     }
 
-    void addBar(const osgGlyphs::ColorKey& key)
+    void addBar(const osgGlyphsData::ColorKey& key)
     {
         const float x1 = _right, x0 = _right - _size;
         const float y1 = _top, y0 = _top - _barHeight;
@@ -122,7 +122,7 @@ protected:
         addText(formatValue(key.min), osg::Vec3(x0 - 0.4f * _size, y0, 0.0f), osgText::Text::RIGHT_CENTER);
     }
 
-    void addCategories(const osgGlyphs::ColorKey& key)
+    void addCategories(const osgGlyphsData::ColorKey& key)
     {
         float y = _top - _size;
         for (const auto& category : key.categories)
@@ -149,7 +149,7 @@ protected:
 class FollowViewport : public osg::NodeCallback
 {
 public:
-    FollowViewport(const osgGlyphs::ColorKey& key, osg::Camera* reference, const osg::Vec4& background)
+    FollowViewport(const osgGlyphsData::ColorKey& key, osg::Camera* reference, const osg::Vec4& background)
         : _key(key), _reference(reference), _background(background)
     {
     }
@@ -175,7 +175,7 @@ public:
     }
 
 private:
-    osgGlyphs::ColorKey _key;
+    osgGlyphsData::ColorKey _key;
     osg::observer_ptr<osg::Camera> _reference;
     osg::Vec4 _background;
     int _width = 0;
@@ -184,10 +184,10 @@ private:
 
 }
 
-osg::ref_ptr<osg::Camera> createColorLegend(const osgGlyphs::ColorKey& key, osg::Camera* reference,
+osg::ref_ptr<osg::Camera> createColorLegend(const osgGlyphsData::ColorKey& key, osg::Camera* reference,
                                             const osg::Vec4& background)
 {
-    if (key.kind == osgGlyphs::ColorKey::None)
+    if (key.kind == osgGlyphsData::ColorKey::None)
         return nullptr;
     osg::ref_ptr<osg::Camera> hud = new osg::Camera;
     hud->setName("osgglyphviewer colour legend");

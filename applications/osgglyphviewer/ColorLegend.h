@@ -3,7 +3,7 @@
 #ifndef OSGGLYPHVIEWER_COLORLEGEND_H
 #define OSGGLYPHVIEWER_COLORLEGEND_H 1
 
-#include <osgGlyphs/GlyphMapping>
+#include <osgGlyphsData/GlyphMapping>
 
 #include <osg/Camera>
 
@@ -15,8 +15,8 @@
  * clearing nothing and testing no depth, so the scene's depth buffer stays intact). Its update
  * callback lays it out again whenever the viewport of reference changes size. Text is dark on a
  * light background and light on a dark one, outlined in the background colour. Returns nullptr
- * for osgGlyphs::ColorKey::None. */
-osg::ref_ptr<osg::Camera> createColorLegend(const osgGlyphs::ColorKey& key, osg::Camera* reference,
+ * for osgGlyphsData::ColorKey::None. */
+osg::ref_ptr<osg::Camera> createColorLegend(const osgGlyphsData::ColorKey& key, osg::Camera* reference,
                                             const osg::Vec4& background);
 
 #endif

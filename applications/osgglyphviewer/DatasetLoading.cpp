@@ -2,7 +2,7 @@
 
 #include "ViewerOptions.h"
 
-#include <osgGlyphs/PointReader>
+#include <osgGlyphsData/PointReader>
 
 #include <algorithm>
 #include <chrono>
@@ -44,7 +44,7 @@ public:
         _lineOpen = true;
     }
 
-    void finish(const osgGlyphs::PointDataset* dataset)
+    void finish(const osgGlyphsData::PointDataset* dataset)
     {
         if (_lineOpen)
             std::fputc('\n', stderr);
@@ -72,15 +72,15 @@ private:
 
 }
 
-osg::ref_ptr<osgGlyphs::PointDataset> loadDataset(const std::string& file, const std::string& format,
-                                                  std::string& error)
+osg::ref_ptr<osgGlyphsData::PointDataset> loadDataset(const std::string& file, const std::string& format,
+                                                      std::string& error)
 {
     ProgressIndicator progress(file);
-    osgGlyphs::PointReadOptions options;
+    osgGlyphsData::PointReadOptions options;
     options.format = format;
     options.progress = [&progress](uint64_t bytesRead, uint64_t totalBytes)
     { progress.update(bytesRead, totalBytes); };
-    osg::ref_ptr<osgGlyphs::PointDataset> dataset = osgGlyphs::readPointFile(file, options, error);
+    osg::ref_ptr<osgGlyphsData::PointDataset> dataset = osgGlyphsData::readPointFile(file, options, error);
     progress.finish(dataset.get());
     if (dataset.valid() && dataset->getNumFrames() == 0)
     {

@@ -2,8 +2,8 @@
 
 #include "ViewerCamera.h"
 
-#include <osgGlyphs/DepthImage>
-#include <osgGlyphs/OffscreenViewer>
+#include <osgGlyphsHeadless/DepthImage>
+#include <osgGlyphsHeadless/OffscreenViewer>
 
 #include <osgDB/WriteFile>
 
@@ -20,8 +20,9 @@ double millisecondsSince(std::chrono::steady_clock::time_point start)
 
 /** Writes the outputs of the frame just rendered; depth comes from sceneCapture, which read it
  * before the legend was drawn, with the projection the scene was drawn with. */
-bool writeOutputs(osgGlyphs::OffscreenViewer& viewer, const osgGlyphs::FrameCapture* sceneCapture,
-                  const ViewerOptions& options, std::string& error)
+bool writeOutputs(osgGlyphsHeadless::OffscreenViewer& viewer,
+                  const osgGlyphsHeadless::FrameCapture* sceneCapture, const ViewerOptions& options,
+                  std::string& error)
 {
     if (!options.output.empty() && !osgDB::writeImageFile(*viewer.getColorImage(), options.output))
     {
@@ -30,9 +31,9 @@ bool writeOutputs(osgGlyphs::OffscreenViewer& viewer, const osgGlyphs::FrameCapt
     }
     if (!options.depthOutput.empty())
     {
-        osg::ref_ptr<osg::Image> distance = osgGlyphs::createEyeDistanceImage(
+        osg::ref_ptr<osg::Image> distance = osgGlyphsHeadless::createEyeDistanceImage(
             *sceneCapture->getDepthImage(), sceneCapture->getProjectionMatrix());
-        if (!distance.valid() || !osgGlyphs::writePFM(*distance, options.depthOutput, error))
+        if (!distance.valid() || !osgGlyphsHeadless::writePFM(*distance, options.depthOutput, error))
         {
             error = options.depthOutput + ": " + (error.empty() ? "cannot convert the depth image" : error);
             return false;
@@ -46,12 +47,12 @@ bool writeOutputs(osgGlyphs::OffscreenViewer& viewer, const osgGlyphs::FrameCapt
 int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
                     std::chrono::steady_clock::time_point start)
 {
-    osg::ref_ptr<osgGlyphs::OffscreenViewer> viewer =
-        new osgGlyphs::OffscreenViewer(options.width, options.height, options.backend);
+    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer =
+        new osgGlyphsHeadless::OffscreenViewer(options.width, options.height, options.backend);
     if (!viewer->valid())
     {
         std::cerr << PROGRAM << ": cannot create a headless OpenGL context through "
-                  << osgGlyphs::getHeadlessBackendName(options.backend) << std::endl;
+                  << osgGlyphsHeadless::getHeadlessBackendName(options.backend) << std::endl;
         return 1;
     }
     const double aspect = static_cast<double>(options.width) / options.height;
@@ -62,10 +63,10 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
     viewer->setSceneData(scene.getRoot());
 
     // The legend is drawn after the scene: depth and projection are read before it.
-    osg::ref_ptr<osgGlyphs::FrameCapture> sceneCapture;
+    osg::ref_ptr<osgGlyphsHeadless::FrameCapture> sceneCapture;
     if (!options.depthOutput.empty())
     {
-        sceneCapture = new osgGlyphs::FrameCapture;
+        sceneCapture = new osgGlyphsHeadless::FrameCapture;
         camera->setPostDrawCallback(sceneCapture.get());
     }
     viewer->getFrameCapture()->setCaptureDepth(false);
@@ -89,8 +90,9 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
             std::cerr << PROGRAM << ": " << error << std::endl;
             return 1;
         }
-        const std::string size = std::to_string(options.width) + "x" + std::to_string(options.height) + ", " +
-                                 osgGlyphs::getHeadlessBackendName(viewer->getContext()->getBackend());
+        const std::string size =
+            std::to_string(options.width) + "x" + std::to_string(options.height) + ", " +
+            osgGlyphsHeadless::getHeadlessBackendName(viewer->getContext()->getBackend());
         const double ms = millisecondsSince(start);
         if (!options.output.empty())
             std::cout << PROGRAM << ": wrote " << options.output << " (" << size << ") in " << ms << " ms"

@@ -7,7 +7,7 @@
 
 #include <chrono>
 
-/** Renders the scene through an osgGlyphs::OffscreenViewer and writes --output (PNG) and
+/** Renders the scene through an osgGlyphsHeadless::OffscreenViewer and writes --output (PNG) and
  * --depth-output (eye-space depth, PFM) from the first frame; with --frames, renders that many
  * frames on the orbit and prints their times. Prints what it wrote and the time since start.
  * Returns the exit code. */

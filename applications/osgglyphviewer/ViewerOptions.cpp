@@ -2,7 +2,7 @@
 
 #include "ViewerText.h"
 
-#include <osgGlyphs/PointReader>
+#include <osgGlyphsData/PointReader>
 
 #include <osgDB/FileUtils>
 
@@ -55,9 +55,9 @@ std::string collectParserErrors(osg::ArgumentParser& arguments)
 
 bool readMappingOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std::string& error)
 {
-    osgGlyphs::GlyphMappingOptions& mapping = options.mapping;
+    osgGlyphsData::GlyphMappingOptions& mapping = options.mapping;
     mapping.optionPrefix = "--";
-    for (const std::string& name : osgGlyphs::getGlyphMappingOptionNames())
+    for (const std::string& name : osgGlyphsData::getGlyphMappingOptionNames())
     {
         const std::string option = "--" + name;
         std::string value, maximum;
@@ -71,7 +71,7 @@ bool readMappingOptions(osg::ArgumentParser& arguments, ViewerOptions& options, 
         }
         else if (name != "color" && name != "lit")
             found = arguments.read(option, value);
-        if (found && !osgGlyphs::setGlyphMappingOption(mapping, name, value, error))
+        if (found && !osgGlyphsData::setGlyphMappingOption(mapping, name, value, error))
             return false;
     }
     if (!osgGlyphs::isTechniqueSupported(mapping.technique, mapping.shape))
@@ -157,7 +157,7 @@ bool readOutputOptions(osg::ArgumentParser& arguments, ViewerOptions& options, s
     std::string backend;
     if (arguments.read("--headless", backend))
     {
-        if (!osgGlyphs::parseHeadlessBackend(backend, options.backend))
+        if (!osgGlyphsHeadless::parseHeadlessBackend(backend, options.backend))
         {
             error = "--headless '" + backend + "': unknown backend (osmesa, egl)";
             return false;
@@ -185,7 +185,7 @@ bool readOutputOptions(osg::ArgumentParser& arguments, ViewerOptions& options, s
 
 void describeViewerOptions(osg::ApplicationUsage& usage)
 {
-    const std::string formats = joinNames(osgGlyphs::getSupportedPointFormats());
+    const std::string formats = joinNames(osgGlyphsData::getSupportedPointFormats());
     usage.addCommandLineOption("<file>",
                                "A point file: " + formats +
                                    " (by extension). Without a file or --random, a built-in scene.");

@@ -3,8 +3,8 @@
 #ifndef OSGGLYPHVIEWER_VIEWEROPTIONS_H
 #define OSGGLYPHVIEWER_VIEWEROPTIONS_H 1
 
-#include <osgGlyphs/GlyphMapping>
-#include <osgGlyphs/HeadlessContext>
+#include <osgGlyphsData/GlyphMapping>
+#include <osgGlyphsHeadless/HeadlessContext>
 
 #include <osg/ApplicationUsage>
 #include <osg/ArgumentParser>
@@ -34,7 +34,7 @@ struct ViewerOptions
     unsigned int randomCount = 0; // --random N; 0: no random dataset
     unsigned int seed = 1;
 
-    osgGlyphs::GlyphMappingOptions mapping;
+    osgGlyphsData::GlyphMappingOptions mapping;
 
     // View
     int width = 800;
@@ -46,7 +46,7 @@ struct ViewerOptions
 
     // Output
     bool offscreen = false;
-    osgGlyphs::HeadlessBackend backend = osgGlyphs::HeadlessBackend::Default;
+    osgGlyphsHeadless::HeadlessBackend backend = osgGlyphsHeadless::HeadlessBackend::Default;
     std::string output;
     std::string depthOutput;
     unsigned int frames = 0; // --frames K; 0: one frame headless, run until closed in a window

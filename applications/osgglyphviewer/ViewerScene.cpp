@@ -9,7 +9,7 @@
 #include <osg/Geode>
 #include <osgGlyphs/GlyphState>
 
-ViewerScene::ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphs::ColorKey& key)
+ViewerScene::ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphsData::ColorKey& key)
     : _source(source), _numFrames(numFrames), _key(key), _root(new osg::Group), _content(new osg::Group)
 {
     _root->addChild(_content.get());
@@ -65,7 +65,7 @@ namespace
 
 osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, std::string& error)
 {
-    osg::ref_ptr<osgGlyphs::PointDataset> dataset = loadDataset(options.file, options.format, error);
+    osg::ref_ptr<osgGlyphsData::PointDataset> dataset = loadDataset(options.file, options.format, error);
     if (!dataset)
         return nullptr;
     if (options.frame >= dataset->getNumFrames())
@@ -75,7 +75,7 @@ osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, std::
                 (dataset->getNumFrames() == 1 ? "" : "s") + ", counted from 0";
         return nullptr;
     }
-    osgGlyphs::GlyphMapper mapper(options.mapping);
+    osgGlyphsData::GlyphMapper mapper(options.mapping);
     if (!mapper.prepare(*dataset, options.frame, error))
         return nullptr;
     ViewerScene::FrameSource source = [dataset, mapper](std::size_t frame, std::string& frameError)
@@ -88,7 +88,7 @@ osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, std::
         return osg::ref_ptr<osg::Node>(geode);
     };
     osg::ref_ptr<ViewerScene> scene = new ViewerScene(source, dataset->getNumFrames(), mapper.getColorKey());
-    const osgGlyphs::PointData* data = dataset->getFrame(options.frame);
+    const osgGlyphsData::PointData* data = dataset->getFrame(options.frame);
     scene->setDescription(options.file + ": " + std::to_string(dataset->getNumFrames()) + " frame" +
                           (dataset->getNumFrames() == 1 ? "" : "s") + " (" + dataset->getFormat() + "), " +
                           std::to_string(data->getNumPoints()) + " points in frame " +

@@ -5,7 +5,7 @@
 
 #include "ViewerOptions.h"
 
-#include <osgGlyphs/GlyphMapping>
+#include <osgGlyphsData/GlyphMapping>
 
 #include <osg/Camera>
 #include <osg/Group>
@@ -24,7 +24,7 @@ public:
     /** Makes the content of a frame, or returns nullptr with a one-line error. */
     typedef std::function<osg::ref_ptr<osg::Node>(std::size_t frame, std::string& error)> FrameSource;
 
-    ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphs::ColorKey& key);
+    ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphsData::ColorKey& key);
 
     /** The scene graph: content and, once addLegend() is called, the legend. */
     osg::Group* getRoot() { return _root.get(); }
@@ -41,7 +41,7 @@ public:
     void setLit(bool lit);
     bool getLit() const { return _lit; }
 
-    const osgGlyphs::ColorKey& getColorKey() const { return _key; }
+    const osgGlyphsData::ColorKey& getColorKey() const { return _key; }
 
     /** Adds the HUD of the colour key, laid out for the viewport of camera. */
     void addLegend(osg::Camera* camera, const osg::Vec4& background);
@@ -62,7 +62,7 @@ protected:
     std::size_t _numFrames;
     std::size_t _frame = 0;
     bool _lit = true;
-    osgGlyphs::ColorKey _key;
+    osgGlyphsData::ColorKey _key;
     osg::ref_ptr<osg::Group> _root;
     osg::ref_ptr<osg::Group> _content;
     bool _hasHomeView = false;

@@ -53,7 +53,7 @@ run_consumer("${WORK_DIR}/cmake-build/consumer" consumer-cmake.png)
 
 file(GLOB pc_dirs "${prefix}/lib*/pkgconfig" "${prefix}/lib/*/pkgconfig")
 set(ENV{PKG_CONFIG_PATH} "${pc_dirs}")
-execute_process(COMMAND pkg-config --cflags --libs osgGlyphs OUTPUT_VARIABLE flags RESULT_VARIABLE result
+execute_process(COMMAND pkg-config --cflags --libs osgGlyphs osgGlyphsHeadless OUTPUT_VARIABLE flags RESULT_VARIABLE result
     OUTPUT_STRIP_TRAILING_WHITESPACE)
 if(NOT result EQUAL 0)
     message(FATAL_ERROR "pkg-config does not find osgGlyphs in ${pc_dirs}")

@@ -10,10 +10,10 @@
 // being compared with it, once the analytic checks pass. Prints every check; exits 1 on failure.
 
 #include <osgGlyphs/ColorMap>
-#include <osgGlyphs/DepthImage>
 #include <osgGlyphs/GlyphCloud>
-#include <osgGlyphs/OffscreenViewer>
 #include <osgGlyphs/Version>
+#include <osgGlyphsHeadless/DepthImage>
+#include <osgGlyphsHeadless/OffscreenViewer>
 
 #include <osg/Geode>
 #include <osg/ShapeDrawable>
@@ -107,7 +107,8 @@ struct Frame
 
 bool render(Frame& frame)
 {
-    osg::ref_ptr<osgGlyphs::OffscreenViewer> viewer = new osgGlyphs::OffscreenViewer(WIDTH, HEIGHT);
+    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer =
+        new osgGlyphsHeadless::OffscreenViewer(WIDTH, HEIGHT);
     if (!viewer->valid())
         return false;
     osg::Camera* camera = viewer->getCamera();
@@ -118,12 +119,12 @@ bool render(Frame& frame)
     viewer->setSceneData(createScene().get());
     viewer->frame();
 
-    osgGlyphs::FrameCapture* capture = viewer->getFrameCapture();
+    osgGlyphsHeadless::FrameCapture* capture = viewer->getFrameCapture();
     frame.color = new osg::Image(*capture->getColorImage(), osg::CopyOp::DEEP_COPY_ALL);
     frame.depth = new osg::Image(*capture->getDepthImage(), osg::CopyOp::DEEP_COPY_ALL);
     frame.view = capture->getViewMatrix();
     frame.projection = capture->getProjectionMatrix();
-    frame.backend = osgGlyphs::getHeadlessBackendName(viewer->getContext()->getBackend());
+    frame.backend = osgGlyphsHeadless::getHeadlessBackendName(viewer->getContext()->getBackend());
     frame.renderer = capture->getGLRenderer();
     return true;
 }
@@ -199,7 +200,7 @@ double eyeDistance(const Frame& frame, const RayCast& ray, double t)
 double renderedEyeDistance(const Frame& frame, int x, int y)
 {
     const float depth = *reinterpret_cast<const float*>(frame.depth->data(x, y));
-    return osgGlyphs::eyeDistanceFromWindowDepth(frame.projection, depth);
+    return osgGlyphsHeadless::eyeDistanceFromWindowDepth(frame.projection, depth);
 }
 
 double hue(const osg::Vec4& c)

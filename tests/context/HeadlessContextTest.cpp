@@ -3,7 +3,7 @@
 
 #include "RenderHarness.h"
 
-#include <osgGlyphs/HeadlessContext>
+#include <osgGlyphsHeadless/HeadlessContext>
 
 #include <osg/GLExtensions>
 #include <osg/Geode>
@@ -13,7 +13,7 @@
 #include <dlfcn.h>
 
 using namespace osgGlyphsTest;
-using osgGlyphs::HeadlessBackend;
+using osgGlyphsHeadless::HeadlessBackend;
 
 namespace
 {
@@ -58,17 +58,17 @@ class HeadlessBackends : public ::testing::TestWithParam<HeadlessBackend>
 TEST(HeadlessContext, OSMesaIsReachableFromThisProcess)
 {
     std::string reason;
-    EXPECT_TRUE(osgGlyphs::HeadlessContext::isOSMesaReachable(reason)) << reason;
+    EXPECT_TRUE(osgGlyphsHeadless::HeadlessContext::isOSMesaReachable(reason)) << reason;
 }
 
 TEST(HeadlessContext, ParsesBackendNames)
 {
     HeadlessBackend backend = HeadlessBackend::Default;
-    EXPECT_TRUE(osgGlyphs::parseHeadlessBackend("EGL", backend));
+    EXPECT_TRUE(osgGlyphsHeadless::parseHeadlessBackend("EGL", backend));
     EXPECT_EQ(backend, HeadlessBackend::EGL);
-    EXPECT_TRUE(osgGlyphs::parseHeadlessBackend("osmesa", backend));
+    EXPECT_TRUE(osgGlyphsHeadless::parseHeadlessBackend("osmesa", backend));
     EXPECT_EQ(backend, HeadlessBackend::OSMesa);
-    EXPECT_FALSE(osgGlyphs::parseHeadlessBackend("glx", backend));
+    EXPECT_FALSE(osgGlyphsHeadless::parseHeadlessBackend("glx", backend));
 }
 
 TEST_P(HeadlessBackends, RenderThroughMesa)
@@ -82,7 +82,7 @@ TEST_P(HeadlessBackends, RenderThroughMesa)
     const Frame frame = renderer.render(createShaderQuad().get());
 
     // glGetString looked up by name, as OSG looks up extension functions.
-    const osgGlyphs::FrameCapture* capture = renderer.getViewer()->getFrameCapture();
+    const osgGlyphsHeadless::FrameCapture* capture = renderer.getViewer()->getFrameCapture();
     EXPECT_NE(capture->getGLVersion().find("Mesa"), std::string::npos) << capture->getGLVersion();
     EXPECT_NE(capture->getGLRenderer().find("llvmpipe"), std::string::npos) << capture->getGLRenderer();
 
@@ -120,4 +120,4 @@ TEST_P(HeadlessBackends, SeveralContextsInOneProcess)
 
 INSTANTIATE_TEST_SUITE_P(, HeadlessBackends, ::testing::Values(HeadlessBackend::OSMesa, HeadlessBackend::EGL),
                          [](const ::testing::TestParamInfo<HeadlessBackend>& param)
-                         { return std::string(osgGlyphs::getHeadlessBackendName(param.param)); });
+                         { return std::string(osgGlyphsHeadless::getHeadlessBackendName(param.param)); });

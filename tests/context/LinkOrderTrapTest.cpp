@@ -4,24 +4,24 @@
 
 #include "RenderHarness.h"
 
-#include <osgGlyphs/HeadlessContext>
+#include <osgGlyphsHeadless/HeadlessContext>
 
 #include <osg/Geode>
 #include <osg/ShapeDrawable>
 
 using namespace osgGlyphsTest;
-using osgGlyphs::HeadlessBackend;
+using osgGlyphsHeadless::HeadlessBackend;
 
 TEST(LinkOrderTrap, OSMesaIsDetectedAsUnreachable)
 {
     std::string reason;
-    EXPECT_FALSE(osgGlyphs::HeadlessContext::isOSMesaReachable(reason));
+    EXPECT_FALSE(osgGlyphsHeadless::HeadlessContext::isOSMesaReachable(reason));
     EXPECT_NE(reason.find("libGL.so"), std::string::npos) << reason;
 }
 
 TEST(LinkOrderTrap, ExplicitOSMesaFailsCleanly)
 {
-    EXPECT_FALSE(osgGlyphs::HeadlessContext::create(16, 16, HeadlessBackend::OSMesa).valid());
+    EXPECT_FALSE(osgGlyphsHeadless::HeadlessContext::create(16, 16, HeadlessBackend::OSMesa).valid());
 }
 
 TEST(LinkOrderTrap, DefaultFallsBackToEGLAndRenders)

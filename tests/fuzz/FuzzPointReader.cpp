@@ -3,7 +3,7 @@
 // Each read either succeeds with consistent frames or fails with exactly one error line naming the
 // input, and both reads agree on success and on the data.
 
-#include <osgGlyphs/PointReader>
+#include <osgGlyphsData/PointReader>
 
 #include <cstddef>
 #include <cstdint>
@@ -43,10 +43,10 @@ private:
     std::size_t _at;
 };
 
-osg::ref_ptr<osgGlyphs::PointDataset> read(std::istream& stream, std::string& error)
+osg::ref_ptr<osgGlyphsData::PointDataset> read(std::istream& stream, std::string& error)
 {
-    osg::ref_ptr<osgGlyphs::PointDataset> dataset = osgGlyphs::readPointStream(
-        stream, OSGGLYPHS_FUZZ_FORMAT, "fuzz", osgGlyphs::PointReadOptions(), error);
+    osg::ref_ptr<osgGlyphsData::PointDataset> dataset = osgGlyphsData::readPointStream(
+        stream, OSGGLYPHS_FUZZ_FORMAT, "fuzz", osgGlyphsData::PointReadOptions(), error);
     if (!dataset.valid())
     {
         if (error.empty() || error.find('\n') != std::string::npos || error.compare(0, 4, "fuzz") != 0)
@@ -61,19 +61,19 @@ osg::ref_ptr<osgGlyphs::PointDataset> read(std::istream& stream, std::string& er
                 std::abort();
         }
         std::vector<osg::Vec3f> positions;
-        osgGlyphs::getPositions(*frame, {}, positions, error);
+        osgGlyphsData::getPositions(*frame, {}, positions, error);
     }
     return dataset;
 }
 
-bool same(const osgGlyphs::PointDataset& a, const osgGlyphs::PointDataset& b)
+bool same(const osgGlyphsData::PointDataset& a, const osgGlyphsData::PointDataset& b)
 {
     if (a.getNumFrames() != b.getNumFrames())
         return false;
     for (std::size_t f = 0; f < a.getNumFrames(); ++f)
     {
-        const osgGlyphs::PointData& x = *a.getFrame(f);
-        const osgGlyphs::PointData& y = *b.getFrame(f);
+        const osgGlyphsData::PointData& x = *a.getFrame(f);
+        const osgGlyphsData::PointData& y = *b.getFrame(f);
         if (x.getColumnNames() != y.getColumnNames() || x.getNumPoints() != y.getNumPoints())
             return false;
         for (std::size_t c = 0; c < x.getNumColumns(); ++c)
@@ -94,8 +94,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size)
     PipeBuffer pipe(bytes, size);
     std::istream unseekable(&pipe);
     std::string error;
-    osg::ref_ptr<osgGlyphs::PointDataset> known = read(seekable, error);
-    osg::ref_ptr<osgGlyphs::PointDataset> unknown = read(unseekable, error);
+    osg::ref_ptr<osgGlyphsData::PointDataset> known = read(seekable, error);
+    osg::ref_ptr<osgGlyphsData::PointDataset> unknown = read(unseekable, error);
     if (known.valid() != unknown.valid() || (known.valid() && !same(*known, *unknown)))
         std::abort();
     return 0;

@@ -4,8 +4,8 @@
 
 #include "GlyphTestScenes.h"
 
-#include <osgGlyphs/DepthImage>
 #include <osgGlyphs/GlyphCloud>
+#include <osgGlyphsHeadless/DepthImage>
 
 #include <osg/Group>
 #include <osg/LightSource>
@@ -238,9 +238,10 @@ TEST_F(SphereImpostor, SphereCrossingTheNearPlaneIsCutNotDropped)
             const double expected = enter >= 0.0 ? frame.windowDepth(origin + direction * enter) : 0.0;
             (enter >= 0.0 ? surface : cut) += 1;
             // So close to the eye the depth slope is steep: compare distances along the view axis.
-            const double expectedDistance = osgGlyphs::eyeDistanceFromWindowDepth(frame.projection, expected);
+            const double expectedDistance =
+                osgGlyphsHeadless::eyeDistanceFromWindowDepth(frame.projection, expected);
             const double distance =
-                osgGlyphs::eyeDistanceFromWindowDepth(frame.projection, frame.depthAt(x, y));
+                osgGlyphsHeadless::eyeDistanceFromWindowDepth(frame.projection, frame.depthAt(x, y));
             const bool bad = !frame.isCovered(x, y) || std::fabs(distance - expectedDistance) > 2e-5;
             wrong += bad ? 1 : 0;
         }

@@ -1,6 +1,6 @@
 #include "RenderHarness.h"
 
-#include <osgGlyphs/DepthImage>
+#include <osgGlyphsHeadless/DepthImage>
 
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
@@ -153,8 +153,8 @@ void Frame::pixelRay(double wx, double wy, osg::Vec3d& origin, osg::Vec3d& direc
     direction.normalize();
 }
 
-Renderer::Renderer(int width, int height, osgGlyphs::HeadlessBackend backend)
-    : _viewer(new osgGlyphs::OffscreenViewer(width, height, backend))
+Renderer::Renderer(int width, int height, osgGlyphsHeadless::HeadlessBackend backend)
+    : _viewer(new osgGlyphsHeadless::OffscreenViewer(width, height, backend))
 {
     osg::Camera* camera = _viewer->getCamera();
     camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
@@ -213,14 +213,14 @@ void saveFrame(const Frame& frame, const std::string& name)
     if (blessing())
     {
         if (!osgDB::writeImageFile(*frame.color, colorFile) ||
-            !osgGlyphs::writePFM(*frame.depth, depthFile, error))
+            !osgGlyphsHeadless::writePFM(*frame.depth, depthFile, error))
             return ::testing::AssertionFailure() << "could not bless " << name << ": " << error;
         std::cout << "[ BLESSED  ] " << colorFile << " and " << depthFile << std::endl;
         return ::testing::AssertionSuccess();
     }
 
     osg::ref_ptr<osg::Image> expectedColor = osgDB::readRefImageFile(colorFile);
-    osg::ref_ptr<osg::Image> expectedDepth = osgGlyphs::readPFM(depthFile, error);
+    osg::ref_ptr<osg::Image> expectedDepth = osgGlyphsHeadless::readPFM(depthFile, error);
     if (!expectedColor || !expectedDepth)
         return ::testing::AssertionFailure() << "missing baseline " << (expectedColor ? depthFile : colorFile)
                                              << " " << error << "; run with OSGGLYPHS_BLESS=1 to create it";

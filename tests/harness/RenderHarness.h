@@ -8,7 +8,7 @@
 #ifndef OSGGLYPHS_TESTS_RENDERHARNESS_H
 #define OSGGLYPHS_TESTS_RENDERHARNESS_H
 
-#include <osgGlyphs/OffscreenViewer>
+#include <osgGlyphsHeadless/OffscreenViewer>
 
 #include <gtest/gtest.h>
 #include <osg/Image>
@@ -44,22 +44,23 @@ struct Frame
     double windowDepth(const osg::Vec3d& world) const { return project(world).z(); }
 };
 
-/** Renders scenes through osgGlyphs::OffscreenViewer with a fixed camera: no automatic
+/** Renders scenes through osgGlyphsHeadless::OffscreenViewer with a fixed camera: no automatic
  * near/far, no camera manipulator, so that analytic expectations hold exactly. */
 class Renderer
 {
 public:
-    Renderer(int width, int height, osgGlyphs::HeadlessBackend backend = osgGlyphs::HeadlessBackend::Default);
+    Renderer(int width, int height,
+             osgGlyphsHeadless::HeadlessBackend backend = osgGlyphsHeadless::HeadlessBackend::Default);
 
     void setLookAt(const osg::Vec3d& eye, const osg::Vec3d& center, const osg::Vec3d& up);
     void setPerspective(double fovyDegrees, double zNear, double zFar);
     void setClearColor(const osg::Vec4& color);
 
     Frame render(osg::Node* scene);
-    osgGlyphs::OffscreenViewer* getViewer() { return _viewer.get(); }
+    osgGlyphsHeadless::OffscreenViewer* getViewer() { return _viewer.get(); }
 
 private:
-    osg::ref_ptr<osgGlyphs::OffscreenViewer> _viewer;
+    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> _viewer;
 };
 
 /** Tolerances for a baseline comparison. A pixel differs when one colour channel differs by

@@ -5,7 +5,7 @@
 #include "GlyphTestScenes.h"
 
 #include <osgGlyphs/GlyphCloud>
-#include <osgGlyphs/GlyphMapping>
+#include <osgGlyphsData/GlyphMapping>
 
 #include <osg/Sequence>
 #include <osgDB/ReadFile>
@@ -234,18 +234,18 @@ TEST(GlyphsPlugin, StockOsgconvConvertsThroughThePlugin)
 
 TEST(GlyphMappingOptions, EveryOptionParsesItsValueOrSaysWhatIsWrong)
 {
-    osgGlyphs::GlyphMappingOptions options;
+    osgGlyphsData::GlyphMappingOptions options;
     options.optionPrefix = "--";
     std::string error;
-    EXPECT_TRUE(osgGlyphs::setGlyphMappingOption(options, "vector", "a,b,c", error));
+    EXPECT_TRUE(osgGlyphsData::setGlyphMappingOption(options, "vector", "a,b,c", error));
     EXPECT_EQ(options.vectorColumns, (std::vector<std::string>{"a", "b", "c"}));
-    EXPECT_TRUE(osgGlyphs::setGlyphMappingOption(options, "range", "-1,2.5", error));
+    EXPECT_TRUE(osgGlyphsData::setGlyphMappingOption(options, "range", "-1,2.5", error));
     EXPECT_TRUE(options.hasRange);
     EXPECT_FLOAT_EQ(options.rangeMin, -1.0f);
     EXPECT_FLOAT_EQ(options.rangeMax, 2.5f);
-    EXPECT_TRUE(osgGlyphs::setGlyphMappingOption(options, "lit", "off", error));
+    EXPECT_TRUE(osgGlyphsData::setGlyphMappingOption(options, "lit", "off", error));
     EXPECT_FALSE(options.lit);
-    EXPECT_TRUE(osgGlyphs::setGlyphMappingOption(options, "technique", "default", error));
+    EXPECT_TRUE(osgGlyphsData::setGlyphMappingOption(options, "technique", "default", error));
 
     const std::vector<std::pair<std::pair<std::string, std::string>, std::string>> failures = {
         {{"position", "x,y"}, "--position 'x,y': give 3 column names separated by commas"},
@@ -265,7 +265,7 @@ TEST(GlyphMappingOptions, EveryOptionParsesItsValueOrSaysWhatIsWrong)
     {
         error.clear();
         EXPECT_FALSE(
-            osgGlyphs::setGlyphMappingOption(options, failure.first.first, failure.first.second, error));
+            osgGlyphsData::setGlyphMappingOption(options, failure.first.first, failure.first.second, error));
         EXPECT_EQ(error.compare(0, failure.second.size(), failure.second), 0) << error;
     }
 }

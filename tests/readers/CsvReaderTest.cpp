@@ -2,7 +2,7 @@
 
 #include "ReaderTestUtil.h"
 
-using namespace osgGlyphs;
+using namespace osgGlyphsData;
 using namespace readertest;
 
 namespace

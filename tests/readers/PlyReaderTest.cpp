@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-using namespace osgGlyphs;
+using namespace osgGlyphsData;
 using namespace readertest;
 
 namespace

@@ -1,13 +1,13 @@
 // The data model: columns, frame metadata, positions, the element table.
 
-#include <osgGlyphs/Elements>
-#include <osgGlyphs/PointData>
+#include <osgGlyphsData/Elements>
+#include <osgGlyphsData/PointData>
 
 #include <gtest/gtest.h>
 
 #include <cstring>
 
-using namespace osgGlyphs;
+using namespace osgGlyphsData;
 
 TEST(PointData, AddsColumnsInOrderAndFindsThem)
 {

@@ -3,7 +3,7 @@
 #ifndef OSGGLYPHS_TESTS_READERTESTUTIL_H
 #define OSGGLYPHS_TESTS_READERTESTUTIL_H 1
 
-#include <osgGlyphs/PointReader>
+#include <osgGlyphsData/PointReader>
 
 #include <gtest/gtest.h>
 
@@ -20,11 +20,12 @@ namespace readertest
 {
 
 /** Reads text (or bytes) in a format through readPointStream, named name in messages. */
-inline osg::ref_ptr<osgGlyphs::PointDataset> readString(const std::string& text, const std::string& format,
-                                                        std::string& error, const std::string& name = "data")
+inline osg::ref_ptr<osgGlyphsData::PointDataset> readString(const std::string& text,
+                                                            const std::string& format, std::string& error,
+                                                            const std::string& name = "data")
 {
     std::istringstream stream(text);
-    return osgGlyphs::readPointStream(stream, format, name, osgGlyphs::PointReadOptions(), error);
+    return osgGlyphsData::readPointStream(stream, format, name, osgGlyphsData::PointReadOptions(), error);
 }
 
 /** Reads what must be malformed; returns the error, failing the test when the read succeeds or
@@ -32,7 +33,7 @@ inline osg::ref_ptr<osgGlyphs::PointDataset> readString(const std::string& text,
 inline std::string readError(const std::string& text, const std::string& format, const std::string& name)
 {
     std::string error;
-    osg::ref_ptr<osgGlyphs::PointDataset> dataset = readString(text, format, error, name);
+    osg::ref_ptr<osgGlyphsData::PointDataset> dataset = readString(text, format, error, name);
     EXPECT_FALSE(dataset.valid()) << "read succeeded: " << name;
     EXPECT_EQ(error.find('\n'), std::string::npos) << error;
     EXPECT_FALSE(error.empty());
@@ -65,7 +66,7 @@ inline std::string writeFile(const std::string& name, const std::string& bytes)
 }
 
 /** A copy of a column, empty (with a failure) when it is missing. */
-inline std::vector<float> column(const osgGlyphs::PointData& data, const std::string& name)
+inline std::vector<float> column(const osgGlyphsData::PointData& data, const std::string& name)
 {
     const std::vector<float>* values = data.getColumn(name);
     EXPECT_NE(values, nullptr) << "no column " << name;

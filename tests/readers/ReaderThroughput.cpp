@@ -6,7 +6,7 @@
 //
 // Peak memory: /usr/bin/time -v reader_throughput read <file> 1
 
-#include <osgGlyphs/PointReader>
+#include <osgGlyphsData/PointReader>
 
 #include <chrono>
 #include <cstdio>
@@ -51,8 +51,8 @@ int read(const std::string& path, int repeats)
     {
         const auto start = std::chrono::steady_clock::now();
         std::string error;
-        osg::ref_ptr<osgGlyphs::PointDataset> dataset =
-            osgGlyphs::readPointFile(path, osgGlyphs::PointReadOptions(), error);
+        osg::ref_ptr<osgGlyphsData::PointDataset> dataset =
+            osgGlyphsData::readPointFile(path, osgGlyphsData::PointReadOptions(), error);
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!dataset.valid())

@@ -2,9 +2,9 @@
 
 #include "ReaderTestUtil.h"
 
-#include <osgGlyphs/Elements>
+#include <osgGlyphsData/Elements>
 
-using namespace osgGlyphs;
+using namespace osgGlyphsData;
 using namespace readertest;
 
 namespace

@@ -14,7 +14,7 @@
 //       than CHANNEL levels (0..255) in a colour channel.
 // Prints what it measured; exits 0 when the check holds, 1 when not, 2 on bad arguments.
 
-#include <osgGlyphs/DepthImage>
+#include <osgGlyphsHeadless/DepthImage>
 
 #include <osg/Vec3d>
 #include <osgDB/ReadFile>
@@ -59,7 +59,7 @@ int checkDepth(int argc, char** argv)
     if (argc < 11 || (argc - 8) % 3 != 0)
         return 2;
     std::string error;
-    osg::ref_ptr<osg::Image> depth = osgGlyphs::readPFM(argv[2], error);
+    osg::ref_ptr<osg::Image> depth = osgGlyphsHeadless::readPFM(argv[2], error);
     if (!depth)
     {
         std::cerr << error << std::endl;

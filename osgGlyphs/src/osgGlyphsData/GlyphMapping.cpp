@@ -1,0 +1,657 @@
+#include <osgGlyphsData/GlyphMapping>
+
+#include "NeighbourDistance.h"
+
+#include <osgGlyphsData/Elements>
+
+#include <osg/BoundingBox>
+#include <osgDB/FileUtils>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <set>
+#include <sstream>
+
+using namespace osgGlyphs;
+using namespace osgGlyphsData;
+
+namespace
+{
+
+/** The categorical palette of types and species (Tableau 10). */
+const osg::Vec4 CATEGORY_PALETTE[] = {{0.122f, 0.467f, 0.706f, 1.0f}, {1.000f, 0.498f, 0.055f, 1.0f},
+                                      {0.173f, 0.627f, 0.173f, 1.0f}, {0.839f, 0.153f, 0.157f, 1.0f},
+                                      {0.580f, 0.404f, 0.741f, 1.0f}, {0.549f, 0.337f, 0.294f, 1.0f},
+                                      {0.890f, 0.467f, 0.761f, 1.0f}, {0.498f, 0.498f, 0.498f, 1.0f},
+                                      {0.737f, 0.741f, 0.133f, 1.0f}, {0.090f, 0.745f, 0.812f, 1.0f}};
+const int NUM_CATEGORY_COLORS = sizeof(CATEGORY_PALETTE) / sizeof(CATEGORY_PALETTE[0]);
+
+/** Glyphs of data without any colour information. */
+const osg::Vec4 UNIFORM_COLOR(0.35f, 0.55f, 0.80f, 1.0f);
+
+/** The most categories a colour key lists. */
+const std::size_t MAX_KEY_CATEGORIES = 12;
+
+/** Velocity columns tried, in order, when --vector is not given. */
+const char* const VECTOR_CANDIDATES[][3] = {
+    {"vx", "vy", "vz"}, {"velo_x", "velo_y", "velo_z"}, {"velocity_x", "velocity_y", "velocity_z"}};
+
+/** Colour columns, as PLY files name them. */
+const std::vector<std::string> RGB_COLUMNS = {"red", "green", "blue"};
+
+/** "a,b,c" */
+std::string joinColumns(const std::vector<std::string>& names, const char* separator = ",")
+{
+    std::string list;
+    for (const std::string& name : names)
+        list += (list.empty() ? "" : separator) + name;
+    return list;
+}
+
+/** 4 significant digits. */
+std::string formatNumber(float value)
+{
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.4g", value);
+    return text;
+}
+
+std::string listColumns(const PointData& data)
+{
+    std::string list = "available columns:";
+    for (const std::string& name : data.getColumnNames())
+        list += " " + name;
+    return data.getNumColumns() == 0 ? "the data has no columns" : list;
+}
+
+std::string missingColumn(const std::string& option, const std::string& column, const PointData& data)
+{
+    return option + ": no column '" + column + "' in " + data.getSource() + "; " + listColumns(data);
+}
+
+osg::Vec4ub toVec4ub(const osg::Vec4& color)
+{
+    auto channel = [](float c)
+    { return static_cast<unsigned char>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f)); };
+    return osg::Vec4ub(channel(color.r()), channel(color.g()), channel(color.b()), channel(color.a()));
+}
+
+const Element& elementOf(float value)
+{
+    if (!std::isfinite(value) || value < 0.0f || value > 1000.0f)
+        return getUnknownElement();
+    return getElement(static_cast<unsigned int>(std::lround(value)));
+}
+
+/** The three columns of a triple, or false when one is missing. */
+bool getTriple(const PointData& data, const std::vector<std::string>& names,
+               const std::vector<float>* columns[3])
+{
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        columns[axis] = names.size() == 3 ? data.getColumn(names[axis]) : nullptr;
+        if (!columns[axis])
+            return false;
+    }
+    return true;
+}
+
+}
+
+void osgGlyphsData::applyGlyphStyle(GlyphCloud& cloud, const GlyphMappingOptions& options)
+{
+    cloud.setShape(options.shape);
+    cloud.setTechnique(options.technique);
+    cloud.setLit(options.lit);
+    if (options.colorMap.valid())
+        cloud.setColorMap(options.colorMap.get());
+    if (options.hasRange)
+        cloud.setScalarRange(options.rangeMin, options.rangeMax);
+}
+
+bool GlyphMapper::prepare(const PointDataset& dataset, std::size_t startFrame, std::string& error)
+{
+    const PointData* data = dataset.getFrame(startFrame);
+    if (!data)
+    {
+        error = dataset.getSource() + ": no frame " + std::to_string(startFrame);
+        return false;
+    }
+    std::vector<osg::Vec3f> positions;
+    if (!getPositions(*data, _options.positionColumns, positions, error))
+    {
+        error = (_options.positionColumns.empty() ? data->getSource() : option("position")) + ": " + error;
+        return false;
+    }
+    const bool vectorShape = _options.shape != GlyphShape::Sphere;
+    if (!resolveVectors(*data, vectorShape, error) || !resolveColor(*data, error))
+        return false;
+    if (!_options.radiusColumn.empty() && !data->hasColumn(_options.radiusColumn))
+    {
+        error = missingColumn(option("radius-by"), _options.radiusColumn, *data);
+        return false;
+    }
+    computeSizes(*data, positions);
+
+    _key = ColorKey();
+    if (_colorSource == ColorSource::Column || _colorSource == ColorSource::Speed)
+    {
+        _key.kind = ColorKey::Scalar;
+        _key.title = _colorSource == ColorSource::Speed ? "speed" : _colorColumn;
+        _key.colorMap = _options.colorMap.valid() ? _options.colorMap.get() : ColorMap::getBuiltin("viridis");
+        if (!computeRange(dataset, error))
+            return false;
+    }
+    else if (_colorSource == ColorSource::Element || _colorSource == ColorSource::Category)
+        buildCategoryKey(*data);
+    return true;
+}
+
+bool GlyphMapper::resolveVectors(const PointData& data, bool required, std::string& error)
+{
+    _vectorColumns.clear();
+    if (!_options.vectorColumns.empty())
+    {
+        for (const std::string& column : _options.vectorColumns)
+        {
+            if (!data.hasColumn(column))
+            {
+                error = missingColumn(option("vector"), column, data);
+                return false;
+            }
+        }
+        _vectorColumns = _options.vectorColumns;
+        return true;
+    }
+    for (const auto& candidate : VECTOR_CANDIDATES)
+    {
+        const std::vector<std::string> names(candidate, candidate + 3);
+        const std::vector<float>* columns[3];
+        if (getTriple(data, names, columns))
+        {
+            _vectorColumns = names;
+            return true;
+        }
+    }
+    if (required)
+    {
+        error = option("glyph") + " " + getShapeName(_options.shape) + " needs vectors: no vx,vy,vz in " +
+                data.getSource() + " (name the columns with " + option("vector") + "); " + listColumns(data);
+        return false;
+    }
+    return true;
+}
+
+bool GlyphMapper::resolveColor(const PointData& data, std::string& error)
+{
+    const std::string& by = _options.colorBy;
+    const std::vector<float>* rgb[3];
+    _colorColumn.clear();
+    if (by == "speed" && !data.hasColumn(by))
+    {
+        if (_vectorColumns.empty())
+        {
+            error = option("color-by") + " speed needs velocities: no vx,vy,vz in " + data.getSource() +
+                    " (name the columns with " + option("vector") + "); " + listColumns(data);
+            return false;
+        }
+        _colorSource = ColorSource::Speed;
+    }
+    else if (!by.empty())
+    {
+        if (!data.hasColumn(by))
+        {
+            error = missingColumn(option("color-by"), by, data);
+            return false;
+        }
+        _colorSource = ColorSource::Column;
+        _colorColumn = by;
+    }
+    else if (data.hasColumn("element"))
+        _colorSource = ColorSource::Element;
+    else if (getTriple(data, RGB_COLUMNS, rgb))
+    {
+        _colorSource = ColorSource::RGB;
+        float largest = 0.0f;
+        for (const std::vector<float>* column : rgb)
+            for (float value : *column)
+                largest = std::isfinite(value) ? std::max(largest, value) : largest;
+        _rgbScale = largest > 1.0f ? 1.0f / 255.0f : 1.0f;
+    }
+    else if (!_vectorColumns.empty())
+        _colorSource = ColorSource::Speed;
+    else if (data.hasColumn("type") || data.hasColumn("species"))
+    {
+        _colorSource = ColorSource::Category;
+        _colorColumn = data.hasColumn("type") ? "type" : "species";
+    }
+    else
+        _colorSource = ColorSource::Uniform;
+    return true;
+}
+
+bool GlyphMapper::computeScalars(const PointData& data, std::vector<float>& scalars, std::string& error) const
+{
+    if (_colorSource == ColorSource::Column)
+    {
+        const std::vector<float>* column = data.getColumn(_colorColumn);
+        if (!column)
+        {
+            error = missingColumn(option("color-by"), _colorColumn, data);
+            return false;
+        }
+        scalars = *column;
+        return true;
+    }
+    const std::vector<float>* v[3];
+    if (!getTriple(data, _vectorColumns, v))
+    {
+        error = data.getSource() + ": speed needs the columns " + joinColumns(_vectorColumns) + "; " +
+                listColumns(data);
+        return false;
+    }
+    scalars.resize(data.getNumPoints());
+    for (std::size_t i = 0; i < scalars.size(); ++i)
+        scalars[i] = osg::Vec3f((*v[0])[i], (*v[1])[i], (*v[2])[i]).length();
+    return true;
+}
+
+bool GlyphMapper::computeRange(const PointDataset& dataset, std::string& error)
+{
+    if (_options.hasRange)
+    {
+        _key.min = _options.rangeMin;
+        _key.max = _options.rangeMax;
+        return true;
+    }
+    // The range of every frame, so that one colour means one value throughout a file.
+    float low = std::numeric_limits<float>::infinity();
+    float high = -low;
+    std::vector<float> scalars;
+    for (const osg::ref_ptr<PointData>& frame : dataset.getFrames())
+    {
+        std::string frameError;
+        if (!computeScalars(*frame, scalars, frameError))
+            continue;
+        for (float value : scalars)
+        {
+            if (std::isfinite(value))
+            {
+                low = std::min(low, value);
+                high = std::max(high, value);
+            }
+        }
+    }
+    if (!(low <= high))
+    {
+        error = option("color-by") + " " + _key.title + ": the data has no finite values to colour by";
+        return false;
+    }
+    _key.min = low;
+    _key.max = high;
+    return true;
+}
+
+void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec3f>& positions)
+{
+    const bool vectorShape = _options.shape != GlyphShape::Sphere;
+    const std::size_t n = data.getNumPoints();
+    _radiusColumn = _options.radiusColumn;
+    _elementRadii = _radiusColumn.empty() && _options.radius <= 0.0f && data.hasColumn("element");
+    // A typical radius: the unit of the default length scale.
+    float typical = 1.0f;
+    if (!_radiusColumn.empty() || _elementRadii)
+    {
+        _radius = _options.radius > 0.0f ? _options.radius : 1.0f; // the factor of --radius-by
+        double sum = 0.0;
+        std::size_t count = 0;
+        for (float value : *data.getColumn(_elementRadii ? "element" : _radiusColumn))
+        {
+            const float radius = _elementRadii ? elementOf(value).covalentRadius : value * _radius;
+            if (std::isfinite(radius) && radius > 0.0f)
+            {
+                sum += radius;
+                ++count;
+            }
+        }
+        typical = count ? static_cast<float>(sum / count) : 1.0f;
+    }
+    else if (_options.radius > 0.0f)
+        typical = _radius = _options.radius;
+    else
+    {
+        osg::BoundingBox box;
+        for (const osg::Vec3f& p : positions)
+        {
+            if (p.isNaN() || !std::isfinite(p.length2()))
+                continue;
+            box.expandBy(p);
+        }
+        const float diagonal = box.valid() ? (box._max - box._min).length() : 0.0f;
+        const float spacing = detail::estimateNeighbourDistance(positions);
+        _radius = std::max(spacing * (vectorShape ? 0.2f : 0.4f), diagonal / (vectorShape ? 500.0f : 250.0f));
+        typical = _radius = _radius > 0.0f ? _radius : 0.5f;
+    }
+
+    _lengthScale = _options.lengthScale > 0.0f ? _options.lengthScale : 1.0f;
+    const std::vector<float>* v[3];
+    if (vectorShape && _options.lengthScale <= 0.0f && getTriple(data, _vectorColumns, v))
+    {
+        double sum = 0.0;
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const float length = osg::Vec3f((*v[0])[i], (*v[1])[i], (*v[2])[i]).length();
+            if (std::isfinite(length) && length > 0.0f)
+            {
+                sum += length;
+                ++count;
+            }
+        }
+        if (count)
+            _lengthScale = static_cast<float>(4.0 * typical / (sum / count));
+    }
+}
+
+osg::Vec4 GlyphMapper::getCategoryColor(float value) const
+{
+    if (_colorSource == ColorSource::Element)
+        return elementOf(value).getColor();
+    if (!std::isfinite(value) || std::fabs(value) > 1e6f)
+        return CATEGORY_PALETTE[7];
+    // LAMMPS types count from 1, categorical columns from 0.
+    const long index = std::lround(value) - (_colorColumn == "type" ? 1 : 0);
+    return CATEGORY_PALETTE[((index % NUM_CATEGORY_COLORS) + NUM_CATEGORY_COLORS) % NUM_CATEGORY_COLORS];
+}
+
+void GlyphMapper::buildCategoryKey(const PointData& data)
+{
+    const bool elements = _colorSource == ColorSource::Element;
+    const std::string column = elements ? "element" : _colorColumn;
+    _key.kind = ColorKey::Categories;
+    _key.title = elements ? "element" : column;
+    std::set<long> values;
+    for (float value : *data.getColumn(column))
+    {
+        if (std::isfinite(value) && std::fabs(value) <= 1e6f)
+            values.insert(std::lround(value));
+        if (values.size() > MAX_KEY_CATEGORIES)
+            break;
+    }
+    const std::vector<std::string>& labels = data.getColumnLabels(column);
+    for (long value : values)
+    {
+        if (_key.categories.size() == MAX_KEY_CATEGORIES)
+        {
+            _key.categories.emplace_back("...", osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
+            break;
+        }
+        std::string label = std::to_string(value);
+        if (elements)
+            label = elementOf(static_cast<float>(value)).symbol;
+        else if (value >= 0 && static_cast<std::size_t>(value) < labels.size())
+            label = labels[value];
+        _key.categories.emplace_back(label, getCategoryColor(static_cast<float>(value)));
+    }
+}
+
+osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::string& error) const
+{
+    std::vector<osg::Vec3f> positions;
+    if (!getPositions(data, _options.positionColumns, positions, error))
+    {
+        error = data.getSource() + ": " + error;
+        return nullptr;
+    }
+    osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+    cloud->setName(data.getSource() + " timestep " + std::to_string(data.getTimestep()));
+    applyGlyphStyle(*cloud, _options);
+    cloud->setPositions(new osg::Vec3Array(positions.begin(), positions.end()));
+    const std::size_t n = positions.size();
+
+    if (!_radiusColumn.empty() || _elementRadii)
+    {
+        const std::vector<float>* column = data.getColumn(_elementRadii ? "element" : _radiusColumn);
+        if (!column)
+        {
+            error = missingColumn(option("radius-by"), _radiusColumn, data);
+            return nullptr;
+        }
+        osg::ref_ptr<osg::FloatArray> radii = new osg::FloatArray(n);
+        for (std::size_t i = 0; i < n; ++i)
+            (*radii)[i] = _elementRadii ? elementOf((*column)[i]).covalentRadius : (*column)[i] * _radius;
+        cloud->setRadii(radii.get());
+    }
+    else
+        cloud->setRadius(_radius);
+
+    const std::vector<float>* v[3];
+    if (_options.shape != GlyphShape::Sphere)
+    {
+        if (!getTriple(data, _vectorColumns, v))
+        {
+            error = missingColumn(option("vector"), joinColumns(_vectorColumns), data);
+            return nullptr;
+        }
+        osg::ref_ptr<osg::Vec3Array> vectors = new osg::Vec3Array(n);
+        for (std::size_t i = 0; i < n; ++i)
+            (*vectors)[i].set((*v[0])[i], (*v[1])[i], (*v[2])[i]);
+        cloud->setVectors(vectors.get());
+        cloud->setLengthScale(_lengthScale);
+    }
+
+    if (_colorSource == ColorSource::Column || _colorSource == ColorSource::Speed)
+    {
+        osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray;
+        if (!computeScalars(data, scalars->asVector(), error))
+            return nullptr;
+        cloud->setScalars(scalars.get());
+        cloud->setScalarRange(_key.min, _key.max);
+    }
+    else if (_colorSource == ColorSource::Element || _colorSource == ColorSource::Category)
+    {
+        const std::string name = _colorSource == ColorSource::Element ? "element" : _colorColumn;
+        const std::vector<float>* column = data.getColumn(name);
+        if (!column)
+        {
+            error = data.getSource() + ": no column '" + name + "' to colour by; " + listColumns(data);
+            return nullptr;
+        }
+        osg::ref_ptr<osg::Vec4ubArray> colors = new osg::Vec4ubArray(n);
+        for (std::size_t i = 0; i < n; ++i)
+            (*colors)[i] = toVec4ub(getCategoryColor((*column)[i]));
+        cloud->setColors(colors.get());
+    }
+    else if (_colorSource == ColorSource::RGB)
+    {
+        const std::vector<float>* rgb[3];
+        if (!getTriple(data, RGB_COLUMNS, rgb))
+        {
+            error = data.getSource() + ": no red, green, blue columns; " + listColumns(data);
+            return nullptr;
+        }
+        osg::ref_ptr<osg::Vec4ubArray> colors = new osg::Vec4ubArray(n);
+        for (std::size_t i = 0; i < n; ++i)
+            (*colors)[i] = toVec4ub(osg::Vec4((*rgb[0])[i] * _rgbScale, (*rgb[1])[i] * _rgbScale,
+                                              (*rgb[2])[i] * _rgbScale, 1.0f));
+        cloud->setColors(colors.get());
+    }
+    else
+        cloud->setColor(UNIFORM_COLOR);
+    return cloud;
+}
+
+std::string GlyphMapper::describe() const
+{
+    std::string text = std::string(getShapeName(_options.shape)) + "s";
+    switch (_colorSource)
+    {
+    case ColorSource::Column:
+    case ColorSource::Speed:
+        text += " coloured by " + _key.title +
+                (_colorSource == ColorSource::Speed ? " |" + joinColumns(_vectorColumns) + "|" : "") + " (" +
+                _key.colorMap->getName() + ", " + formatNumber(_key.min) + " .. " + formatNumber(_key.max) +
+                ")";
+        break;
+    case ColorSource::Element:
+        text += " coloured by element";
+        break;
+    case ColorSource::RGB:
+        text += " in the colours of red,green,blue";
+        break;
+    case ColorSource::Category:
+        text += " coloured by " + _colorColumn;
+        break;
+    default:
+        text += " in one colour";
+    }
+    if (!_radiusColumn.empty())
+        text += ", radius " + formatNumber(_radius) + " x " + _radiusColumn;
+    else if (_elementRadii)
+        text += ", covalent radii";
+    else
+        text += ", radius " + formatNumber(_radius);
+    if (_options.shape != GlyphShape::Sphere)
+        text += ", vectors " + joinColumns(_vectorColumns) + " x " + formatNumber(_lengthScale);
+    return text;
+}
+
+std::string GlyphMapper::option(const char* name) const
+{
+    return _options.optionPrefix + name;
+}
+
+namespace
+{
+
+/** Splits "a,b,c" into exactly count non-empty parts. */
+bool splitList(const std::string& text, std::size_t count, std::vector<std::string>& parts)
+{
+    parts.clear();
+    std::istringstream stream(text);
+    std::string part;
+    while (std::getline(stream, part, ','))
+        parts.push_back(part);
+    if (!text.empty() && text.back() == ',')
+        parts.push_back(std::string());
+    return parts.size() == count &&
+           std::none_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); });
+}
+
+bool parseNumber(const std::string& text, float& value)
+{
+    char* end = nullptr;
+    value = std::strtof(text.c_str(), &end);
+    return !text.empty() && end == text.c_str() + text.size() && std::isfinite(value);
+}
+
+bool parseSwitch(const std::string& text, bool& value)
+{
+    if (text == "on" || text == "true" || text == "1")
+        value = true;
+    else if (text == "off" || text == "false" || text == "0")
+        value = false;
+    else
+        return false;
+    return true;
+}
+
+bool resolveColorMap(const std::string& name, osg::ref_ptr<ColorMap>& colorMap, std::string& error)
+{
+    colorMap = ColorMap::getBuiltin(name);
+    if (colorMap.valid())
+        return true;
+    if (!osgDB::fileExists(name))
+    {
+        error = "'" + name + "': neither a built-in colour map (" +
+                joinColumns(ColorMap::getBuiltinNames(), ", ") + ") nor a file";
+        return false;
+    }
+    colorMap = ColorMap::readFile(name, error);
+    return colorMap.valid();
+}
+
+/** Sets the option; false with error saying what the value should be (without the option's name). */
+bool setOption(GlyphMappingOptions& options, const std::string& name, const std::string& value,
+               std::string& error)
+{
+    if (name == "position" || name == "vector")
+    {
+        std::vector<std::string>& columns =
+            name == "position" ? options.positionColumns : options.vectorColumns;
+        if (!splitList(value, 3, columns))
+            error = "'" + value + "': give 3 column names separated by commas";
+    }
+    else if (name == "radius" || name == "length-scale")
+    {
+        float& number = name == "radius" ? options.radius : options.lengthScale;
+        if (!parseNumber(value, number) || !(number > 0.0f))
+            error = "'" + value + "': must be a positive number";
+    }
+    else if (name == "radius-by" || name == "color-by" || name == "color")
+    {
+        (name == "radius-by" ? options.radiusColumn : options.colorBy) = value;
+        if (value.empty())
+            error = "needs a column name";
+    }
+    else if (name == "colormap")
+        resolveColorMap(value, options.colorMap, error);
+    else if (name == "range")
+    {
+        std::vector<std::string> bounds;
+        options.hasRange = splitList(value, 2, bounds) && parseNumber(bounds[0], options.rangeMin) &&
+                           parseNumber(bounds[1], options.rangeMax);
+        if (!options.hasRange)
+            error = "'" + value + "': give the minimum and the maximum";
+        else if (!(options.rangeMin < options.rangeMax))
+            error = "'" + value + "': the minimum must be less than the maximum";
+    }
+    else if (name == "glyph")
+    {
+        if (!parseShape(value, options.shape))
+            error = "'" + value + "': unknown shape (sphere, cone, arrow, cylinder)";
+    }
+    else if (name == "technique")
+    {
+        if (!parseTechnique(value, options.technique))
+            error = "'" + value + "': unknown technique (default, " + joinColumns(getTechniqueNames(), ", ") +
+                    ")";
+    }
+    else if (name == "lit")
+    {
+        if (!parseSwitch(value, options.lit))
+            error = "'" + value + "': on or off";
+    }
+    else if (name == "unlit")
+    {
+        options.lit = false;
+        if (!value.empty())
+            error = "takes no value";
+    }
+    else
+        error = "unknown option (" + joinColumns(getGlyphMappingOptionNames(), ", ") + ")";
+    return error.empty();
+}
+
+}
+
+const std::vector<std::string>& osgGlyphsData::getGlyphMappingOptionNames()
+{
+    static const std::vector<std::string> names = {
+        "position", "vector",       "radius", "radius-by", "color-by", "color", "colormap",
+        "range",    "length-scale", "glyph",  "technique", "lit",      "unlit"};
+    return names;
+}
+
+bool osgGlyphsData::setGlyphMappingOption(GlyphMappingOptions& options, const std::string& name,
+                                          const std::string& value, std::string& error)
+{
+    std::string what;
+    if (setOption(options, name, value, what))
+        return true;
+    error = options.optionPrefix + name + (what[0] == '\'' ? " " : ": ") + what;
+    return false;
+}

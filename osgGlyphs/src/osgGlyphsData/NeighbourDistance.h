@@ -1,0 +1,24 @@
+/* osgGlyphs - private: the typical spacing of points, for a default glyph size. Not installed. */
+
+#ifndef OSGGLYPHS_NEIGHBOURDISTANCE_H
+#define OSGGLYPHS_NEIGHBOURDISTANCE_H 1
+
+#include <osg/Vec3f>
+
+#include <vector>
+
+namespace osgGlyphsData
+{
+namespace detail
+{
+
+/** The median distance from a point to its nearest neighbour, over an evenly spaced sample of at
+ * most maxSamples points, found through a uniform grid. Points at the same place as their
+ * neighbour and non-finite points are left out. Returns 0 when there are fewer than two distinct
+ * finite points. */
+float estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions, unsigned int maxSamples = 2000);
+
+}
+}
+
+#endif

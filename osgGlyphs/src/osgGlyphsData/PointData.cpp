@@ -1,0 +1,204 @@
+#include <osgGlyphsData/PointData>
+
+#include <utility>
+
+using namespace osgGlyphsData;
+
+PointData::PointData(std::size_t numPoints)
+    : _numPoints(numPoints), _tilt(0.0, 0.0, 0.0), _hasBox(false), _timestep(0)
+{
+}
+
+PointData::~PointData() {}
+
+bool PointData::setNumPoints(std::size_t numPoints)
+{
+    if (!_columns.empty() && numPoints != _numPoints)
+        return false;
+    _numPoints = numPoints;
+    return true;
+}
+
+int PointData::findColumn(const std::string& name) const
+{
+    for (std::size_t i = 0; i < _names.size(); ++i)
+    {
+        if (_names[i] == name)
+            return static_cast<int>(i);
+    }
+    return -1;
+}
+
+const std::vector<float>* PointData::getColumn(const std::string& name) const
+{
+    const int index = findColumn(name);
+    return index < 0 ? nullptr : &_columns[index];
+}
+
+const std::vector<float>* PointData::getColumn(std::size_t index) const
+{
+    return index < _columns.size() ? &_columns[index] : nullptr;
+}
+
+bool PointData::addColumn(const std::string& name, std::vector<float>&& values)
+{
+    std::string ignored;
+    return addColumn(name, std::move(values), ignored);
+}
+
+bool PointData::addColumn(const std::string& name, std::vector<float>&& values, std::string& error)
+{
+    if (name.empty())
+    {
+        error = "a column needs a name";
+        return false;
+    }
+    if (values.size() != _numPoints)
+    {
+        error = "column '" + name + "' has " + std::to_string(values.size()) + " values, the frame has " +
+                std::to_string(_numPoints) + " points";
+        return false;
+    }
+    if (hasColumn(name))
+    {
+        error = "duplicate column '" + name + "'";
+        return false;
+    }
+    _names.push_back(name);
+    _columns.push_back(std::move(values));
+    _labels.emplace_back();
+    return true;
+}
+
+const std::vector<std::string>& PointData::getColumnLabels(const std::string& name) const
+{
+    static const std::vector<std::string> none;
+    const int index = findColumn(name);
+    return index < 0 ? none : _labels[index];
+}
+
+bool PointData::setColumnLabels(const std::string& name, std::vector<std::string> labels)
+{
+    const int index = findColumn(name);
+    if (index < 0)
+        return false;
+    _labels[index] = std::move(labels);
+    return true;
+}
+
+void PointData::setBox(const osg::BoundingBoxd& box, const osg::Vec3d& tilt)
+{
+    _box = box;
+    _tilt = tilt;
+    _hasBox = true;
+}
+
+void PointData::clearBox()
+{
+    _box.init();
+    _tilt.set(0.0, 0.0, 0.0);
+    _hasBox = false;
+}
+
+osg::Vec3d PointData::scaledToCartesian(const osg::Vec3d& s) const
+{
+    const osg::Vec3d length = _box._max - _box._min;
+    return osg::Vec3d(_box._min.x() + s.x() * length.x() + s.y() * _tilt.x() + s.z() * _tilt.y(),
+                      _box._min.y() + s.y() * length.y() + s.z() * _tilt.z(),
+                      _box._min.z() + s.z() * length.z());
+}
+
+PointDataset::PointDataset() {}
+
+PointDataset::~PointDataset() {}
+
+namespace
+{
+
+std::string listColumns(const PointData& data)
+{
+    if (data.getNumColumns() == 0)
+        return "the frame has no columns";
+    std::string list = "available columns:";
+    for (const std::string& name : data.getColumnNames())
+        list += " " + name;
+    return list;
+}
+
+// The three columns of the first complete triple in candidates, or none.
+bool findTriple(const PointData& data, const char* const candidates[][3], std::size_t count,
+                const std::vector<float>* triple[3], bool& scaled)
+{
+    for (std::size_t c = 0; c < count; ++c)
+    {
+        for (int axis = 0; axis < 3; ++axis)
+            triple[axis] = data.getColumn(candidates[c][axis]);
+        if (triple[0] && triple[1] && triple[2])
+        {
+            scaled = c >= 2;
+            return true;
+        }
+    }
+    return false;
+}
+
+} // namespace
+
+bool osgGlyphsData::getPositions(const PointData& data, const std::vector<std::string>& columns,
+                                 std::vector<osg::Vec3f>& out, std::string& error)
+{
+    const std::vector<float>* triple[3] = {nullptr, nullptr, nullptr};
+    bool scaled = false;
+    if (columns.empty())
+    {
+        static const char* const candidates[][3] = {
+            {"x", "y", "z"}, {"xu", "yu", "zu"}, {"xs", "ys", "zs"}, {"xsu", "ysu", "zsu"}};
+        if (!findTriple(data, candidates, 4, triple, scaled))
+        {
+            error = "no position columns (x y z, xu yu zu, xs ys zs or xsu ysu zsu); " + listColumns(data);
+            return false;
+        }
+        if (scaled && !data.hasBox())
+        {
+            error = "scaled coordinates need a simulation box, and the frame has none";
+            return false;
+        }
+    }
+    else
+    {
+        if (columns.size() != 3)
+        {
+            error = "positions need exactly three columns, " + std::to_string(columns.size()) + " given";
+            return false;
+        }
+        for (int axis = 0; axis < 3; ++axis)
+        {
+            triple[axis] = data.getColumn(columns[axis]);
+            if (!triple[axis])
+            {
+                error = "no column '" + columns[axis] + "'; " + listColumns(data);
+                return false;
+            }
+        }
+    }
+
+    const std::size_t n = data.getNumPoints();
+    out.resize(n);
+    const std::vector<float>& x = *triple[0];
+    const std::vector<float>& y = *triple[1];
+    const std::vector<float>& z = *triple[2];
+    if (scaled)
+    {
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const osg::Vec3d p = data.scaledToCartesian(osg::Vec3d(x[i], y[i], z[i]));
+            out[i].set(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()));
+        }
+    }
+    else
+    {
+        for (std::size_t i = 0; i < n; ++i)
+            out[i].set(x[i], y[i], z[i]);
+    }
+    return true;
+}

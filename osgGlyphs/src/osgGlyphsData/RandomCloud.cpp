@@ -1,0 +1,103 @@
+#include <osgGlyphsData/RandomCloud>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+using namespace osgGlyphs;
+using namespace osgGlyphsData;
+
+namespace
+{
+
+/** The independent random streams of one seed. */
+enum class Stream : unsigned int
+{
+    Positions = 1,
+    Scalars = 2,
+    Vectors = 3
+};
+
+/** Uniform floats in [0, 1) from a std::mt19937 seeded by (seed, stream), converted without
+ * std::uniform_real_distribution, whose results differ between standard libraries. */
+class UniformFloats
+{
+public:
+    UniformFloats(unsigned int seed, Stream stream)
+    {
+        std::seed_seq sequence{seed, static_cast<unsigned int>(stream)};
+        _engine.seed(sequence);
+    }
+
+    /** 24 random bits: every float in [0, 1) of that resolution, equally likely. */
+    float operator()() { return static_cast<float>(_engine() >> 8) * (1.0f / 16777216.0f); }
+
+private:
+    std::mt19937 _engine;
+};
+
+osg::ref_ptr<osg::Vec3Array> createPositions(unsigned int count, unsigned int seed)
+{
+    UniformFloats uniform(seed, Stream::Positions);
+    osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
+    positions->reserve(count);
+    for (unsigned int i = 0; i < count; ++i)
+    {
+        const float x = uniform(), y = uniform(), z = uniform();
+        positions->push_back(osg::Vec3(x, y, z));
+    }
+    return positions;
+}
+
+osg::ref_ptr<osg::FloatArray> createScalars(unsigned int count, unsigned int seed)
+{
+    UniformFloats uniform(seed, Stream::Scalars);
+    osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray;
+    scalars->reserve(count);
+    for (unsigned int i = 0; i < count; ++i)
+        scalars->push_back(uniform());
+    return scalars;
+}
+
+/** Directions uniform on the unit sphere (uniform height and azimuth, Archimedes), times a
+ * magnitude uniform in [0.5, 1]. */
+osg::ref_ptr<osg::Vec3Array> createVectors(unsigned int count, unsigned int seed)
+{
+    UniformFloats uniform(seed, Stream::Vectors);
+    osg::ref_ptr<osg::Vec3Array> vectors = new osg::Vec3Array;
+    vectors->reserve(count);
+    for (unsigned int i = 0; i < count; ++i)
+    {
+        const float z = 2.0f * uniform() - 1.0f;
+        const float azimuth = 2.0f * osg::PIf * uniform();
+        const float magnitude = 0.5f + 0.5f * uniform();
+        const float ring = std::sqrt(std::max(0.0f, 1.0f - z * z));
+        vectors->push_back(osg::Vec3(ring * std::cos(azimuth), ring * std::sin(azimuth), z) * magnitude);
+    }
+    return vectors;
+}
+
+}
+
+float osgGlyphsData::getDefaultRandomRadius(unsigned int count)
+{
+    const float radius = 0.5f / std::sqrt(static_cast<float>(std::max(count, 1u)));
+    return std::min(radius, 0.1f);
+}
+
+osg::ref_ptr<GlyphCloud> osgGlyphsData::createRandomCloud(const RandomCloudOptions& options)
+{
+    const float radius = options.radius > 0.0f ? options.radius : getDefaultRandomRadius(options.count);
+    osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+    cloud->setPositions(createPositions(options.count, options.seed).get());
+    cloud->setRadius(radius);
+    cloud->setScalars(createScalars(options.count, options.seed).get());
+    cloud->setScalarRange(0.0f, 1.0f);
+    if (options.shape != GlyphShape::Sphere)
+    {
+        cloud->setVectors(createVectors(options.count, options.seed).get());
+        cloud->setLengthScale(options.lengthScale > 0.0f ? options.lengthScale : 4.0f * radius);
+    }
+    cloud->setShape(options.shape);
+    return cloud;
+}

@@ -1,0 +1,240 @@
+#include "ColumnTable.h"
+
+#include "Fields.h"
+
+#include <osgGlyphsData/Elements>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+using namespace osgGlyphsData;
+using namespace osgGlyphsData::readers;
+
+namespace
+{
+
+// Category indices are stored as floats: beyond 2^24 they would no longer be exact.
+const std::size_t maxLabels = std::size_t(1) << 24;
+
+// The atomic number of a species label: a symbol, or the number itself; 0 when unknown.
+unsigned int elementNumber(const std::string& label)
+{
+    uint64_t number = 0;
+    if (parseUInt64(label, number))
+        return number <= getMaxAtomicNumber() ? static_cast<unsigned int>(number) : 0u;
+    return getElementBySymbol(label).number;
+}
+
+} // namespace
+
+std::vector<std::string> osgGlyphsData::readers::componentNames(const std::string& name, std::size_t count)
+{
+    std::vector<std::string> names;
+    if (count == 1)
+    {
+        names.push_back(name);
+    }
+    else if (count == 3)
+    {
+        for (const char* axis : {"_x", "_y", "_z"})
+            names.push_back(name + axis);
+    }
+    else
+    {
+        for (std::size_t i = 0; i < count; ++i)
+            names.push_back(name + "_" + std::to_string(i));
+    }
+    return names;
+}
+
+ColumnTable::ColumnTable(TextScanner& scanner) : _scanner(scanner), _rows(0) {}
+
+std::size_t ColumnTable::addColumn(const std::string& name, Kind kind)
+{
+    if (_columns.size() >= MaxColumns)
+        _scanner.fail("more than " + std::to_string(MaxColumns) + " columns");
+    std::vector<std::string> outputs;
+    if (kind == Species)
+        outputs = {"element", "species"};
+    else
+        outputs = {name};
+    for (const std::string& output : outputs)
+    {
+        if (output.empty())
+            _scanner.fail("empty column name");
+        if (_outputNames.count(output))
+            _scanner.fail("duplicate column " + quote(output));
+    }
+    _outputNames.insert(outputs.begin(), outputs.end());
+    Column column;
+    column.name = name;
+    column.kind = kind;
+    _columns.push_back(std::move(column));
+    return _columns.size() - 1;
+}
+
+void ColumnTable::reserve(std::size_t rows)
+{
+    for (Column& column : _columns)
+        column.values.reserve(rows);
+}
+
+void ColumnTable::failFieldCount(std::size_t fieldCount) const
+{
+    std::string names;
+    for (std::size_t i = 0; i < _columns.size() && i < 12; ++i)
+        names += (i ? " " : "") + _columns[i].name;
+    if (_columns.size() > 12)
+        names += " ...";
+    _scanner.fail("wrong number of columns: " + std::to_string(fieldCount) + " fields, expected " +
+                  std::to_string(_columns.size()) + " (" + names + ")");
+}
+
+void ColumnTable::appendRow(std::string_view line)
+{
+    const char* p = line.data();
+    const char* end = p + line.size();
+    const std::size_t count = _columns.size();
+    for (std::size_t c = 0; c < count; ++c)
+    {
+        p = skipBlanks(p, end);
+        if (p == end)
+            failFieldCount(countFields(line));
+        Column& column = _columns[c];
+        if (column.kind == Number)
+        {
+            // The fast path: parse in place, then check that the field ends there.
+            const char* start = p;
+            if (*p == '+')
+                ++p;
+            float value = 0.0f;
+            const fast_float::from_chars_result result = fast_float::from_chars(p, end, value);
+            if (result.ec == std::errc() && result.ptr > p && (result.ptr == end || isBlank(*result.ptr)) &&
+                std::isfinite(value))
+            {
+                column.values.push_back(value);
+                p = result.ptr;
+                continue;
+            }
+            p = start;
+        }
+        const char* stop = skipField(p, end);
+        appendField(c, std::string_view(p, static_cast<std::size_t>(stop - p)));
+        p = stop;
+    }
+    if (skipBlanks(p, end) != end)
+        failFieldCount(countFields(line));
+}
+
+void ColumnTable::readRows(uint64_t done, uint64_t count, const std::string& section,
+                           std::string_view stopMarker)
+{
+    std::string_view line;
+    for (uint64_t row = done; row < count; ++row)
+    {
+        if (!_scanner.nextLine(line))
+            _scanner.fail("unexpected end of file: " + section + " has " + std::to_string(row) + " of " +
+                          std::to_string(count) + " rows");
+        if (!stopMarker.empty() && startsWith(trim(line), stopMarker))
+            _scanner.fail(quote(trim(line)) + " after " + std::to_string(row) + " of " +
+                          std::to_string(count) + " rows of " + section);
+        appendRow(line);
+    }
+}
+
+void ColumnTable::appendField(std::size_t index, std::string_view field)
+{
+    Column& column = _columns[index];
+    switch (column.kind)
+    {
+    case Number:
+    {
+        float value = 0.0f;
+        if (!parseFloat(field, value) || !std::isfinite(value))
+            _scanner.fail(describeBadNumber(field, column.name));
+        column.values.push_back(value);
+        break;
+    }
+    case Logical:
+    {
+        const std::string lower = toLower(field);
+        if (lower == "t" || lower == "true" || lower == "1")
+            column.values.push_back(1.0f);
+        else if (lower == "f" || lower == "false" || lower == "0")
+            column.values.push_back(0.0f);
+        else
+            _scanner.fail("column '" + column.name + "': " + quote(field) +
+                          " is not a logical value (T or F)");
+        break;
+    }
+    case Species:
+    case Category:
+        if (field.empty())
+            _scanner.fail("column '" + column.name + "': empty field");
+        appendLabel(column, field);
+        break;
+    }
+}
+
+void ColumnTable::appendLabel(Column& column, std::string_view field)
+{
+    auto found = column.indices.find(field);
+    if (found != column.indices.end())
+    {
+        column.values.push_back(found->second);
+        return;
+    }
+    if (column.labels.size() >= maxLabels)
+        _scanner.fail("column '" + column.name + "': more than " + std::to_string(maxLabels) +
+                      " distinct labels");
+    const float index = static_cast<float>(column.labels.size());
+    column.labels.emplace_back(field);
+    column.indices.emplace(std::string(field), index);
+    column.values.push_back(index);
+}
+
+void ColumnTable::appendValue(std::size_t index, double value, uint64_t offset)
+{
+    Column& column = _columns[index];
+    const float single = static_cast<float>(value);
+    if (!std::isfinite(single))
+    {
+        std::ostringstream text;
+        text << "column '" << column.name << "': ";
+        if (std::isfinite(value))
+            text << "value " << value << " is out of the range of a float";
+        else
+            text << "value " << value << " is not a finite number";
+        _scanner.failAtByte(offset, text.str());
+    }
+    column.values.push_back(single);
+}
+
+osg::ref_ptr<PointData> ColumnTable::finish()
+{
+    osg::ref_ptr<PointData> data = new PointData(getNumRows());
+    std::string error;
+    for (Column& column : _columns)
+    {
+        if (column.kind == Species)
+        {
+            std::vector<float> numbers(column.labels.size());
+            for (std::size_t i = 0; i < numbers.size(); ++i)
+                numbers[i] = static_cast<float>(elementNumber(column.labels[i]));
+            std::vector<float> elements(column.values.size());
+            for (std::size_t i = 0; i < elements.size(); ++i)
+                elements[i] = numbers[static_cast<std::size_t>(column.values[i])];
+            data->addColumn("element", std::move(elements), error);
+            data->addColumn("species", std::move(column.values), error);
+            data->setColumnLabels("species", std::move(column.labels));
+        }
+        else
+        {
+            data->addColumn(column.name, std::move(column.values), error);
+            if (column.kind == Category)
+                data->setColumnLabels(column.name, std::move(column.labels));
+        }
+    }
+    return data;
+}

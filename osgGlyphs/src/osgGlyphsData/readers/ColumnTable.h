@@ -1,0 +1,102 @@
+/* osgGlyphs - private: the columns of one frame while a reader fills them. */
+
+#ifndef OSGGLYPHS_READERS_COLUMNTABLE_H
+#define OSGGLYPHS_READERS_COLUMNTABLE_H 1
+
+#include "TextScanner.h"
+
+#include <osgGlyphsData/PointData>
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace osgGlyphsData
+{
+namespace readers
+{
+
+/** Column names for a property of count components: name itself for 1; name_x, name_y, name_z
+ * for 3; name_0 .. name_{count-1} otherwise. */
+std::vector<std::string> componentNames(const std::string& name, std::size_t count);
+
+/** Named float columns of one frame, filled row by row from text fields or binary values.
+ * Every bad value throws through the scanner, naming the column, at the scanner's current line
+ * (text) or at the given byte offset (binary). */
+class ColumnTable
+{
+public:
+    /** How a text field becomes a float. */
+    enum Kind
+    {
+        Number,   ///< a finite number
+        Species,  ///< a chemical symbol: becomes columns "element" (atomic number) and "species"
+        Category, ///< any string: the index of its first appearance, labels kept
+        Logical   ///< T/F, True/False, 1/0: 1 or 0
+    };
+
+    /** More columns than this are refused (a header of garbage, usually). */
+    static constexpr std::size_t MaxColumns = 4096;
+
+    explicit ColumnTable(TextScanner& scanner);
+
+    /** Adds a column; fails at the scanner's current line when the name (or, for Species, one of
+     * "element" and "species") is taken or empty. Returns its index. */
+    std::size_t addColumn(const std::string& name, Kind kind = Number);
+
+    std::size_t getNumColumns() const { return _columns.size(); }
+    const std::string& getName(std::size_t column) const { return _columns[column].name; }
+    std::size_t getNumRows() const { return _columns.empty() ? _rows : _columns[0].values.size(); }
+
+    void reserve(std::size_t rows);
+
+    /** Appends one row from a line of blank-separated fields, exactly one per column. */
+    void appendRow(std::string_view line);
+
+    /** Reads rows done .. count-1 with appendRow() (the first done rows were appended already). At
+     * the end of the file fails naming section and how many rows it had; a line starting with
+     * stopMarker (when not empty) fails the same way. */
+    void readRows(uint64_t done, uint64_t count, const std::string& section,
+                  std::string_view stopMarker = std::string_view());
+
+    /** Appends one text field to a column. */
+    void appendField(std::size_t column, std::string_view field);
+
+    /** Appends one binary value read at offset. */
+    void appendValue(std::size_t column, double value, uint64_t offset);
+
+    /** For tables without columns: counts rows. */
+    void addEmptyRows(uint64_t count) { _rows += static_cast<std::size_t>(count); }
+
+    /** Fails at the current line because it has fieldCount fields instead of one per column. */
+    [[noreturn]] void failFieldCount(std::size_t fieldCount) const;
+
+    /** Moves the columns into a new frame. */
+    osg::ref_ptr<PointData> finish();
+
+private:
+    struct Column
+    {
+        std::string name;
+        Kind kind;
+        std::vector<float> values;
+        std::vector<std::string> labels;
+        std::map<std::string, float, std::less<>> indices;
+    };
+
+    void appendLabel(Column& column, std::string_view field);
+
+    TextScanner& _scanner;
+    std::vector<Column> _columns;
+    std::set<std::string> _outputNames;
+    std::size_t _rows;
+};
+
+} // namespace readers
+}
+
+#endif

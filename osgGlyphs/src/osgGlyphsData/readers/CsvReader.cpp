@@ -1,0 +1,116 @@
+// CSV: a header row of column names, then one point a row; comma, semicolon, tab or blank separated.
+
+#include "ColumnTable.h"
+#include "Fields.h"
+#include "Readers.h"
+
+#include <cstring>
+
+using namespace osgGlyphsData;
+using namespace osgGlyphsData::readers;
+
+namespace
+{
+
+// A separator of 0 means runs of blanks.
+char detectSeparator(std::string_view header)
+{
+    for (char candidate : {',', ';', '\t'})
+    {
+        if (header.find(candidate) != std::string_view::npos)
+            return candidate;
+    }
+    return 0;
+}
+
+// A field without surrounding blanks and double quotes.
+std::string_view unquote(std::string_view field)
+{
+    field = trim(field);
+    if (field.size() >= 2 && field.front() == '"' && field.back() == '"')
+        field = field.substr(1, field.size() - 2);
+    return field;
+}
+
+void splitSeparated(std::string_view line, char separator, std::vector<std::string_view>& fields)
+{
+    if (separator == 0)
+    {
+        splitBlanks(line, fields);
+        return;
+    }
+    fields.clear();
+    std::size_t start = 0;
+    for (;;)
+    {
+        const std::size_t stop = line.find(separator, start);
+        fields.push_back(
+            unquote(line.substr(start, stop == std::string_view::npos ? line.npos : stop - start)));
+        if (stop == std::string_view::npos)
+            return;
+        start = stop + 1;
+    }
+}
+
+bool isSkipped(std::string_view line)
+{
+    const std::string_view text = trim(line);
+    return text.empty() || text.front() == '#';
+}
+
+} // namespace
+
+void osgGlyphsData::readers::readCsv(TextScanner& scanner, PointDataset& dataset)
+{
+    std::string_view line;
+    bool found = false;
+    while (!found && scanner.nextLine(line))
+    {
+        if (scanner.getLineNumber() == 1 && startsWith(line, "\xEF\xBB\xBF"))
+            line.remove_prefix(3); // UTF-8 byte order mark
+        found = !isSkipped(line);
+    }
+    if (!found)
+        scanner.fail("no header line: the file has only comments and blank lines");
+
+    const char separator = detectSeparator(line);
+    std::vector<std::string_view> fields;
+    splitSeparated(line, separator, fields);
+    bool allNumbers = true;
+    for (std::string_view field : fields)
+    {
+        double value = 0.0;
+        allNumbers = allNumbers && parseDouble(field, value);
+    }
+    if (allNumbers)
+        scanner.fail("the first line must name the columns, found " + quote(trim(line)));
+    ColumnTable table(scanner);
+    for (std::string_view field : fields)
+    {
+        for (char c : field)
+        {
+            if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F)
+                scanner.fail("the column name " + quote(field) +
+                             " has control characters (is this binary data?)");
+        }
+        table.addColumn(std::string(field));
+    }
+
+    while (scanner.nextLine(line))
+    {
+        if (isSkipped(line))
+            continue;
+        if (separator == 0)
+        {
+            table.appendRow(line);
+            continue;
+        }
+        splitSeparated(line, separator, fields);
+        if (fields.size() != table.getNumColumns())
+            table.failFieldCount(fields.size());
+        for (std::size_t c = 0; c < fields.size(); ++c)
+            table.appendField(c, fields[c]);
+    }
+    osg::ref_ptr<PointData> frame = table.finish();
+    dataset.addFrame(frame.get());
+}

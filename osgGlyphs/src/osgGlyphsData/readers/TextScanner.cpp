@@ -1,0 +1,174 @@
+#include "TextScanner.h"
+
+#include <algorithm>
+#include <cstring>
+#include <istream>
+#include <limits>
+
+using namespace osgGlyphsData::readers;
+
+TextScanner::TextScanner(std::istream& in, const std::string& name, uint64_t totalBytes,
+                         const Progress& progress)
+    : _in(in), _name(name), _totalBytes(totalBytes), _progress(progress),
+      // A small stream gets a small buffer; a large or unknown one reads a block at a time.
+      _blockSize(totalBytes > 0 ? static_cast<std::size_t>(std::min<uint64_t>(totalBytes + 1, BlockSize))
+                                : UnknownSizeBlockSize),
+      _begin(0), _end(0), _bufferOffset(0), _bytesRead(0), _lineNumber(0), _lineOffset(0), _eof(false)
+{
+}
+
+uint64_t TextScanner::getRemainingBytes() const
+{
+    if (_totalBytes == 0)
+        return std::numeric_limits<uint64_t>::max();
+    const uint64_t offset = getOffset();
+    return offset < _totalBytes ? _totalBytes - offset : 0;
+}
+
+uint64_t TextScanner::getMaxItems(uint64_t minBytesEach) const
+{
+    const uint64_t remaining = getRemainingBytes();
+    if (remaining == std::numeric_limits<uint64_t>::max())
+        return remaining;
+    return remaining / std::max<uint64_t>(minBytesEach, 1);
+}
+
+std::size_t TextScanner::boundedReserve(uint64_t count, uint64_t minBytesEach) const
+{
+    // Of a stream of unknown size, reserve what one block could hold; the arrays grow from there.
+    uint64_t limit = getMaxItems(minBytesEach);
+    if (limit == std::numeric_limits<uint64_t>::max())
+        limit = BlockSize / std::max<uint64_t>(minBytesEach, 1);
+    return static_cast<std::size_t>(std::min(count, limit));
+}
+
+// Makes at least wanted bytes available from _begin, if the stream has them.
+bool TextScanner::fill(std::size_t wanted)
+{
+    while (_end - _begin < wanted && !_eof)
+    {
+        if (_begin > 0)
+        {
+            std::memmove(_buffer.data(), _buffer.data() + _begin, _end - _begin);
+            _bufferOffset += _begin;
+            _end -= _begin;
+            _begin = 0;
+        }
+        // Grow only for a line (or record) longer than the buffer.
+        std::size_t capacity = std::max(_buffer.size(), _blockSize);
+        while (capacity < wanted || capacity == _end)
+            capacity *= 2;
+        if (capacity != _buffer.size())
+            _buffer.resize(capacity);
+
+        _in.read(_buffer.data() + _end, static_cast<std::streamsize>(_buffer.size() - _end));
+        const std::size_t count = static_cast<std::size_t>(_in.gcount());
+        if (_in.bad())
+            failAtByte(_bufferOffset + _end, "read error");
+        _end += count;
+        _bytesRead += count;
+        if (count == 0 || _in.eof())
+            _eof = true;
+        reportProgress();
+    }
+    return _end - _begin >= wanted;
+}
+
+bool TextScanner::nextLine(std::string_view& line)
+{
+    std::size_t searched = 0;
+    for (;;)
+    {
+        const char* start = _buffer.data() + _begin;
+        const void* newline = std::memchr(start + searched, '\n', _end - _begin - searched);
+        if (newline || (_eof && _end > _begin))
+        {
+            const char* stop = newline ? static_cast<const char*>(newline) : _buffer.data() + _end;
+            std::size_t length = static_cast<std::size_t>(stop - start);
+            ++_lineNumber;
+            _lineOffset = getOffset();
+            _begin += length + (newline ? 1 : 0);
+            if (length > 0 && start[length - 1] == '\r')
+                --length;
+            line = std::string_view(start, length);
+            return true;
+        }
+        if (_eof)
+            return false;
+        searched = _end - _begin;
+        if (searched >= MaxLineLength)
+            failAtLine(_lineNumber + 1, "line longer than " + std::to_string(MaxLineLength >> 20) +
+                                            " MiB (is this binary data?)");
+        fill(searched + 1);
+    }
+}
+
+std::string_view TextScanner::requireLine(const std::string& what)
+{
+    std::string_view line;
+    if (!nextLine(line))
+        fail("unexpected end of file, expected " + what);
+    return line;
+}
+
+const char* TextScanner::peekBytes(std::size_t n)
+{
+    if (_end - _begin < n && !fill(n))
+        return nullptr;
+    return _buffer.data() + _begin;
+}
+
+bool TextScanner::readBytes(void* destination, std::size_t n)
+{
+    char* out = static_cast<char*>(destination);
+    while (n > 0)
+    {
+        if (_begin == _end && !fill(1))
+            return false;
+        const std::size_t count = std::min(n, _end - _begin);
+        std::memcpy(out, _buffer.data() + _begin, count);
+        _begin += count;
+        out += count;
+        n -= count;
+    }
+    return true;
+}
+
+bool TextScanner::skipBytes(uint64_t n)
+{
+    while (n > 0)
+    {
+        if (_begin == _end && !fill(1))
+            return false;
+        const std::size_t count = static_cast<std::size_t>(std::min<uint64_t>(n, _end - _begin));
+        _begin += count;
+        n -= count;
+    }
+    return true;
+}
+
+bool TextScanner::atEnd()
+{
+    return _begin == _end && !fill(1);
+}
+
+void TextScanner::failAtLine(uint64_t line, const std::string& what) const
+{
+    throw ReadError{_name + ":" + std::to_string(line == 0 ? 1 : line) + ": " + what};
+}
+
+void TextScanner::fail(const std::string& what) const
+{
+    failAtLine(_lineNumber, what);
+}
+
+void TextScanner::failAtByte(uint64_t offset, const std::string& what) const
+{
+    throw ReadError{_name + ": byte " + std::to_string(offset) + ": " + what};
+}
+
+void TextScanner::reportProgress() const
+{
+    if (_progress)
+        _progress(_bytesRead, _totalBytes);
+}

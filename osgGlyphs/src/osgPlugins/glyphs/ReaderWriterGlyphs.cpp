@@ -1,0 +1,203 @@
+// osgdb_glyphs: point data files (LAMMPS dumps, XYZ, CSV, PLY, VTK) read as glyph scenes by
+// any osgDB application, through the library's readers and its column-to-glyph mapping.
+
+#include <osgGlyphsData/GlyphMapping>
+#include <osgGlyphsData/PointReader>
+
+#include <osg/Sequence>
+#include <osgDB/FileNameUtils>
+#include <osgDB/FileUtils>
+#include <osgDB/Registry>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <sstream>
+
+namespace
+{
+
+/** The pseudo-extension: data.ply.glyphs reads data.ply with this plugin. */
+const char* const PSEUDO_EXTENSION = "glyphs";
+
+/** Seconds each frame of a multi-frame file is shown. */
+const double FRAME_SECONDS = 0.1;
+
+/** What an option string asks for beyond the column mapping. */
+struct ReadSettings
+{
+    osgGlyphsData::GlyphMappingOptions mapping;
+    std::string format;
+    bool allFrames = true;
+    unsigned long frame = 0;
+};
+
+bool parseFrame(const std::string& value, ReadSettings& settings)
+{
+    if (value == "all")
+    {
+        settings.allFrames = true;
+        return true;
+    }
+    char* end = nullptr;
+    errno = 0;
+    settings.frame = std::strtoul(value.c_str(), &end, 10);
+    settings.allFrames = false;
+    return !value.empty() && value[0] != '-' && end == value.c_str() + value.size() && errno == 0;
+}
+
+/** Reads "key=value key flag ..."; keys of other plugins are left to them. */
+bool parseOptionString(const std::string& text, ReadSettings& settings, std::string& error)
+{
+    const std::vector<std::string>& mappingNames = osgGlyphsData::getGlyphMappingOptionNames();
+    std::istringstream tokens(text);
+    std::string token;
+    while (tokens >> token)
+    {
+        const std::string::size_type equals = token.find('=');
+        const std::string key = token.substr(0, equals);
+        const std::string value = equals == std::string::npos ? std::string() : token.substr(equals + 1);
+        if (key == "format")
+            settings.format = value;
+        else if (key == "frame")
+        {
+            if (!parseFrame(value, settings))
+            {
+                error = "frame '" + value + "': a frame number from 0, or all";
+                return false;
+            }
+        }
+        else if (std::find(mappingNames.begin(), mappingNames.end(), key) != mappingNames.end())
+        {
+            if (!osgGlyphsData::setGlyphMappingOption(settings.mapping, key, value, error))
+                return false;
+        }
+    }
+    return true;
+}
+
+osg::ref_ptr<osg::Node> createScene(const osgGlyphsData::PointDataset& dataset, const ReadSettings& settings,
+                                    std::string& error)
+{
+    const std::size_t first = settings.allFrames ? 0 : settings.frame;
+    if (first >= dataset.getNumFrames())
+    {
+        error = dataset.getSource() + ": frame " + std::to_string(first) + " asked for, the file has " +
+                std::to_string(dataset.getNumFrames());
+        return nullptr;
+    }
+    osgGlyphsData::GlyphMapper mapper(settings.mapping);
+    if (!mapper.prepare(dataset, first, error))
+        return nullptr;
+    const std::size_t last = settings.allFrames ? dataset.getNumFrames() : first + 1;
+    if (last - first == 1)
+        return mapper.createCloud(*dataset.getFrame(first), error);
+
+    // Every frame, played in a loop.
+    osg::ref_ptr<osg::Sequence> sequence = new osg::Sequence;
+    sequence->setName(dataset.getSource());
+    for (std::size_t index = first; index < last; ++index)
+    {
+        osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = mapper.createCloud(*dataset.getFrame(index), error);
+        if (!cloud)
+            return nullptr;
+        sequence->addChild(cloud.get(), FRAME_SECONDS);
+    }
+    sequence->setInterval(osg::Sequence::LOOP, 0, -1);
+    sequence->setDuration(1.0f, -1);
+    sequence->setMode(osg::Sequence::START);
+    return sequence;
+}
+
+}
+
+/** Reads point data as glyphs; see the README for the option string. */
+class ReaderWriterGlyphs : public osgDB::ReaderWriter
+{
+public:
+    ReaderWriterGlyphs()
+    {
+        supportsExtension(PSEUDO_EXTENSION, "Pseudo-loader: <file>.glyphs reads <file> as glyphs");
+        supportsExtension("lammpstrj", "LAMMPS text dump");
+        supportsExtension("lammps", "LAMMPS text dump");
+        supportsExtension("dump", "LAMMPS text dump");
+        supportsExtension("xyz", "XYZ / extended XYZ");
+        supportsExtension("extxyz", "Extended XYZ");
+        supportsExtension("csv", "Comma-separated point columns");
+        supportsExtension("ply", "PLY vertices as glyphs");
+        supportsExtension("vtk", "Legacy VTK points as glyphs");
+        supportsOption("format=<name>", "Read as csv, xyz, lammps, ply or vtk, whatever the extension");
+        supportsOption("frame=<n>|all",
+                       "One frame of a multi-frame file, or all of them in a loop (default)");
+        supportsOption("glyph=<shape>", "sphere (default), cone, arrow or cylinder");
+        supportsOption("color=<column>|speed", "Colour through the colour map by a column (also color-by)");
+        supportsOption("colormap=<name>|<file>", "viridis (default), magma, cividis, coolwarm, grayscale");
+        supportsOption("range=<min>,<max>", "Colour range instead of the data's");
+        supportsOption("radius=<r>", "Glyph radius, or the factor of radius-by");
+        supportsOption("radius-by=<column>", "Radii from a column");
+        supportsOption("position=<x>,<y>,<z>", "Position columns");
+        supportsOption("vector=<x>,<y>,<z>", "Vector columns of cones, arrows and cylinders");
+        supportsOption("length-scale=<s>", "Vector length per unit of magnitude");
+        supportsOption("technique=<name>", "How glyphs are drawn (default: the library's)");
+        supportsOption("unlit", "No lighting");
+    }
+
+    const char* className() const override { return "osgGlyphs point data reader"; }
+
+    ReadResult readObject(const std::string& file, const Options* options) const override
+    {
+        return readNode(file, options);
+    }
+
+    ReadResult readNode(const std::string& file, const Options* options) const override
+    {
+        const std::string extension = osgDB::getLowerCaseFileExtension(file);
+        if (!acceptsExtension(extension))
+            return ReadResult::FILE_NOT_HANDLED;
+        const std::string dataFile = extension == PSEUDO_EXTENSION ? osgDB::getNameLessExtension(file) : file;
+        const std::string path = osgDB::findDataFile(dataFile, options);
+        if (path.empty())
+            return ReadResult::FILE_NOT_FOUND;
+
+        ReadSettings settings;
+        std::string error;
+        if (!parseOptionString(getOptionString(options), settings, error))
+            return failure(error);
+        osgGlyphsData::PointReadOptions readOptions;
+        readOptions.format = settings.format;
+        if (readOptions.format.empty() && osgGlyphsData::formatFromExtension(path).empty())
+            return failure(path + ": no point format for this extension; give one with format=<name>");
+        return toScene(osgGlyphsData::readPointFile(path, readOptions, error), settings, error);
+    }
+
+    ReadResult readNode(std::istream& stream, const Options* options) const override
+    {
+        ReadSettings settings;
+        std::string error;
+        if (!parseOptionString(getOptionString(options), settings, error))
+            return failure(error);
+        if (settings.format.empty())
+            return ReadResult::FILE_NOT_HANDLED; // a stream has no extension to tell its format
+        return toScene(osgGlyphsData::readPointStream(stream, settings.format, "stream",
+                                                      osgGlyphsData::PointReadOptions(), error),
+                       settings, error);
+    }
+
+private:
+    static std::string getOptionString(const Options* options)
+    {
+        return options ? options->getOptionString() : std::string();
+    }
+
+    static ReadResult failure(const std::string& message) { return ReadResult("osgdb_glyphs: " + message); }
+
+    /** The glyphs of a dataset, or the error of its reading or mapping. */
+    static ReadResult toScene(const osg::ref_ptr<osgGlyphsData::PointDataset>& dataset,
+                              const ReadSettings& settings, std::string& error)
+    {
+        osg::ref_ptr<osg::Node> scene = dataset ? createScene(*dataset, settings, error) : nullptr;
+        return scene ? ReadResult(scene.get()) : failure(error);
+    }
+};
+
+REGISTER_OSGPLUGIN(glyphs, ReaderWriterGlyphs)
