@@ -6,6 +6,7 @@
 #include <osgGlyphs/Version>
 #include <osgGlyphsData/RandomCloud>
 #include <osgGlyphsHeadless/OffscreenViewer>
+#include <osgGlyphsPaper/Techniques>
 
 #include <osg/ArgumentParser>
 #include <osg/Geode>
@@ -67,7 +68,7 @@ bool parseDataPath(const std::string& name, DataPath& path)
 
 struct Settings
 {
-    std::vector<osgGlyphs::GlyphTechnique> techniques = osgGlyphs::getTechniques();
+    std::vector<std::string> techniques = osgGlyphs::getTechniqueNames();
     std::vector<osgGlyphs::GlyphShape> shapes = {osgGlyphs::GlyphShape::Sphere};
     std::vector<unsigned int> counts = {100, 316, 1000, 3162, 10000, 31623, 100000, 316228, 1000000};
     int width = 800;
@@ -87,7 +88,7 @@ struct Settings
 /** One measured case: a row of the CSV. */
 struct Result
 {
-    osgGlyphs::GlyphTechnique technique;
+    std::string technique;
     osgGlyphs::GlyphShape shape;
     unsigned int n;
     double msMedian;
@@ -148,11 +149,20 @@ bool parseCount(const std::string& text, unsigned int& count)
     return true;
 }
 
+/** A registered technique's name, "default" for the default one. */
+bool parseTechnique(const std::string& name, std::string& technique)
+{
+    const osg::ref_ptr<osgGlyphs::GlyphTechnique> created = osgGlyphs::createTechnique(name);
+    if (created)
+        technique = created->getTechniqueName();
+    return created.valid();
+}
+
 std::string getTechniqueChoices()
 {
     std::string choices = "default";
-    for (osgGlyphs::GlyphTechnique technique : osgGlyphs::getTechniques())
-        choices += std::string(", ") + osgGlyphs::getTechniqueName(technique);
+    for (const std::string& technique : osgGlyphs::getTechniqueNames())
+        choices += std::string(", ") + technique;
     return choices;
 }
 
@@ -231,7 +241,7 @@ bool readLists(osg::ArgumentParser& arguments, Settings& settings)
 {
     std::string text;
     if (arguments.read("--techniques", text) &&
-        !parseList(arguments, "--techniques", text, getTechniqueChoices(), osgGlyphs::parseTechnique,
+        !parseList(arguments, "--techniques", text, getTechniqueChoices(), parseTechnique,
                    settings.techniques))
         return false;
     if (arguments.read("--shapes", text) &&
@@ -328,9 +338,8 @@ osg::ref_ptr<osg::Geometry> createPointsFloor(osg::Vec3Array* positions)
 }
 
 /** The drawable of a case and its GPU bytes per glyph. */
-osg::ref_ptr<osg::Geometry> createDrawable(osgGlyphs::GlyphTechnique technique, osgGlyphs::GlyphShape shape,
-                                           unsigned int n, float radius, const Settings& settings,
-                                           double& bytesPerGlyph)
+osg::ref_ptr<osg::Geometry> createDrawable(std::string technique, osgGlyphs::GlyphShape shape, unsigned int n,
+                                           float radius, const Settings& settings, double& bytesPerGlyph)
 {
     osgGlyphsData::RandomCloudOptions options;
     options.count = n;
@@ -339,9 +348,9 @@ osg::ref_ptr<osg::Geometry> createDrawable(osgGlyphs::GlyphTechnique technique, 
     options.radius = radius;
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(options);
     osg::ref_ptr<osg::Geometry> drawable = cloud;
-    if (osgGlyphs::isTechniqueSupported(technique, shape))
+    if (osgGlyphs::createTechnique(technique)->supportsShape(shape))
     {
-        cloud->setTechnique(technique);
+        cloud->setTechnique(osgGlyphs::createTechnique(technique).get());
         cloud->setCompressedAttributes(settings.compressedAttributes);
         bytesPerGlyph = cloud->getGPUBytesPerGlyph();
     }
@@ -443,15 +452,14 @@ std::string formatMs(double ms)
     return format(ms, ms >= 100.0 ? 0 : ms >= 10.0 ? 1 : ms >= 1.0 ? 2 : 3);
 }
 
-std::string describeCase(osgGlyphs::GlyphTechnique technique, osgGlyphs::GlyphShape shape, unsigned int n)
+std::string describeCase(std::string technique, osgGlyphs::GlyphShape shape, unsigned int n)
 {
-    return std::string(osgGlyphs::getTechniqueName(technique)) + " " + osgGlyphs::getShapeName(shape) +
-           " n=" + std::to_string(n);
+    return technique + " " + osgGlyphs::getShapeName(shape) + " n=" + std::to_string(n);
 }
 
 /** "[index/total] technique shape n=N: " */
-std::string getProgressPrefix(size_t index, size_t total, osgGlyphs::GlyphTechnique technique,
-                              osgGlyphs::GlyphShape shape, unsigned int n)
+std::string getProgressPrefix(size_t index, size_t total, std::string technique, osgGlyphs::GlyphShape shape,
+                              unsigned int n)
 {
     return "[" + std::to_string(index) + "/" + std::to_string(total) + "] " +
            describeCase(technique, shape, n) + ": ";
@@ -468,8 +476,8 @@ void printProgress(const Result& result, size_t index, size_t total)
 
 void writeCsvRow(std::ostream& csv, const Result& result, const Settings& settings)
 {
-    csv << osgGlyphs::getTechniqueName(result.technique) << ',' << osgGlyphs::getShapeName(result.shape)
-        << ',' << result.n << ',' << settings.width << ',' << settings.height << ',' << settings.frames << ','
+    csv << result.technique << ',' << osgGlyphs::getShapeName(result.shape) << ',' << result.n << ','
+        << settings.width << ',' << settings.height << ',' << settings.frames << ','
         << format(result.msMedian, 4) << ',' << format(result.msMin, 4) << ',' << format(result.msMax, 4)
         << ',' << format(result.firstFrameMs, 4) << ',' << format(result.bytesPerGlyph, 2) << ','
         << getDataPathName(settings.dataPath) << ',' << format(result.coverage, 4) << ','
@@ -477,7 +485,7 @@ void writeCsvRow(std::ostream& csv, const Result& result, const Settings& settin
         << std::flush;
 }
 
-const Result* findResult(const std::vector<Result>& results, osgGlyphs::GlyphTechnique technique,
+const Result* findResult(const std::vector<Result>& results, std::string technique,
                          osgGlyphs::GlyphShape shape, unsigned int n)
 {
     for (const Result& result : results)
@@ -509,18 +517,17 @@ void printSummary(const std::vector<Result>& results, const Settings& settings)
     {
         for (unsigned int n : settings.counts)
         {
-            const Result* floor = findResult(results, osgGlyphs::GlyphTechnique::PointsFloor, shape, n);
-            const Result* polygons = findResult(results, osgGlyphs::GlyphTechnique::Polygons, shape, n);
-            for (osgGlyphs::GlyphTechnique technique : settings.techniques)
+            const Result* floor = findResult(results, "points-floor", shape, n);
+            const Result* polygons = findResult(results, "polygons", shape, n);
+            for (const std::string& technique : settings.techniques)
             {
                 const Result* result = findResult(results, technique, shape, n);
                 if (!result)
                     continue;
                 std::cout << std::left << std::setw(10) << osgGlyphs::getShapeName(shape) << std::setw(10)
-                          << n << std::setw(18) << osgGlyphs::getTechniqueName(technique) << std::right
-                          << std::setw(10) << formatMs(result->msMedian) << std::setw(12)
-                          << formatRatio(*result, floor) << std::setw(12) << formatRatio(*result, polygons)
-                          << "\n";
+                          << n << std::setw(18) << technique << std::right << std::setw(10)
+                          << formatMs(result->msMedian) << std::setw(12) << formatRatio(*result, floor)
+                          << std::setw(12) << formatRatio(*result, polygons) << "\n";
             }
         }
     }
@@ -563,13 +570,13 @@ std::string quoteShell(const std::string& text)
 }
 
 /** The same colour for a technique in every panel; the floor is a dashed black reference. */
-std::string getLineStyle(osgGlyphs::GlyphTechnique technique)
+std::string getLineStyle(std::string technique)
 {
-    if (technique == osgGlyphs::GlyphTechnique::PointsFloor)
+    if (technique == "points-floor")
         return "lc rgb '#000000' dt 2 lw 2 pt 7 ps 0.8";
     static const char* const colors[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728",
                                          "#9467bd", "#8c564b", "#e377c2", "#17becf"};
-    const std::vector<osgGlyphs::GlyphTechnique> all = osgGlyphs::getTechniques();
+    const std::vector<std::string> all = osgGlyphs::getTechniqueNames();
     const size_t index = std::find(all.begin(), all.end(), technique) - all.begin();
     return std::string("lc rgb '") + colors[index % 8] + "' lw 2 pt 7 ps 0.8";
 }
@@ -580,10 +587,9 @@ std::string writePanelData(const std::filesystem::path& folder, const std::vecto
                            const Settings& settings, osgGlyphs::GlyphShape shape)
 {
     std::string plot;
-    for (osgGlyphs::GlyphTechnique technique : settings.techniques)
+    for (const std::string& technique : settings.techniques)
     {
-        const std::string name = std::string(osgGlyphs::getShapeName(shape)) + "-" +
-                                 osgGlyphs::getTechniqueName(technique) + ".dat";
+        const std::string name = std::string(osgGlyphs::getShapeName(shape)) + "-" + technique + ".dat";
         std::ofstream data(folder / name);
         bool any = false;
         for (unsigned int n : settings.counts)
@@ -599,7 +605,7 @@ std::string writePanelData(const std::filesystem::path& folder, const std::vecto
             continue;
         plot += std::string(plot.empty() ? "plot " : ", \\\n     ") + quoteGnuplot((folder / name).string()) +
                 " using 1:2:3:4 with yerrorlines " + getLineStyle(technique) + " title " +
-                quoteGnuplot(osgGlyphs::getTechniqueName(technique));
+                quoteGnuplot(technique);
     }
     return plot;
 }
@@ -670,15 +676,14 @@ bool writePlot(const std::vector<Result>& results, const Settings& settings, con
 
 struct Case
 {
-    osgGlyphs::GlyphTechnique technique;
+    std::string technique;
     osgGlyphs::GlyphShape shape;
     unsigned int n;
 };
 
-bool canMeasure(osgGlyphs::GlyphTechnique technique, osgGlyphs::GlyphShape shape)
+bool canMeasure(std::string technique, osgGlyphs::GlyphShape shape)
 {
-    return technique == osgGlyphs::GlyphTechnique::PointsFloor ||
-           osgGlyphs::isTechniqueSupported(technique, shape);
+    return technique == "points-floor" || osgGlyphs::createTechnique(technique)->supportsShape(shape);
 }
 
 /** Every case to measure, by shape, then n, then technique, so that an interrupted run has
@@ -688,16 +693,15 @@ std::vector<Case> listCases(const Settings& settings)
     std::vector<Case> cases;
     for (osgGlyphs::GlyphShape shape : settings.shapes)
     {
-        for (osgGlyphs::GlyphTechnique technique : settings.techniques)
+        for (const std::string& technique : settings.techniques)
         {
             if (!canMeasure(technique, shape))
-                std::cout << "[skipped] " << osgGlyphs::getTechniqueName(technique) << " "
-                          << osgGlyphs::getShapeName(shape) << ": the library cannot draw it yet"
-                          << std::endl;
+                std::cout << "[skipped] " << technique << " " << osgGlyphs::getShapeName(shape)
+                          << ": the library cannot draw it yet" << std::endl;
         }
         for (unsigned int n : settings.counts)
         {
-            for (osgGlyphs::GlyphTechnique technique : settings.techniques)
+            for (const std::string& technique : settings.techniques)
             {
                 if (canMeasure(technique, shape))
                     cases.push_back(Case{technique, shape, n});
@@ -734,8 +738,7 @@ double measureCoverage(osgGlyphs::GlyphShape shape, unsigned int n, float radius
     once.frames = 1;
     Result result;
     std::string renderer;
-    if (!measureCase(Case{osgGlyphs::GlyphTechnique::GeometryShader, shape, n}, radius, once, result,
-                     renderer))
+    if (!measureCase(Case{osgGlyphs::DEFAULT_GLYPH_TECHNIQUE, shape, n}, radius, once, result, renderer))
         return -1.0;
     return result.coverage;
 }
@@ -876,6 +879,7 @@ int run(const Settings& settings)
 
 int main(int argc, char** argv)
 {
+    osgGlyphsPaper::registerTechniques(); // the paper's techniques are the benchmark's references
     osg::ArgumentParser arguments(&argc, argv);
     osg::ApplicationUsage* usage = arguments.getApplicationUsage();
     usage->setApplicationName(PROGRAM);

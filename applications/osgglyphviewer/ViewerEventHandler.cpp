@@ -1,6 +1,6 @@
 #include "ViewerEventHandler.h"
 
-#include <osgGlyphs/GlyphState>
+#include <osgGlyphs/GlyphStateCache>
 
 #include <iostream>
 
@@ -24,7 +24,7 @@ bool ViewerEventHandler::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActi
         aa.requestRedraw();
         return true;
     case 'r':
-        osgGlyphs::GlyphStateSets::instance()->reloadShaders();
+        osgGlyphs::GlyphStateCache::instance()->reloadShaders();
         std::cout << PROGRAM << ": reloaded the glyph shaders" << std::endl;
         aa.requestRedraw();
         return true;

@@ -11,7 +11,7 @@
  * - l: glyphs lit or unlit. The event is left unhandled, so that an osgGA::StateSetManipulator
  *   added after this handler toggles OpenGL lighting of the other geometry with the same key;
  * - n, p: the next and the previous frame of a multi-frame file (wrapping around);
- * - r: re-reads the glyph shaders (osgGlyphs::GlyphStateSets::reloadShaders). */
+ * - r: re-reads the glyph shaders (osgGlyphs::GlyphStateCache::reloadShaders). */
 class ViewerEventHandler : public osgGA::GUIEventHandler
 {
 public:

@@ -74,11 +74,11 @@ bool readMappingOptions(osg::ArgumentParser& arguments, ViewerOptions& options, 
         if (found && !osgGlyphsData::setGlyphMappingOption(mapping, name, value, error))
             return false;
     }
-    if (!osgGlyphs::isTechniqueSupported(mapping.technique, mapping.shape))
-        std::cerr << PROGRAM << ": warning: the " << osgGlyphs::getTechniqueName(mapping.technique)
+    const osg::ref_ptr<osgGlyphs::GlyphTechnique> technique = osgGlyphs::createTechnique(mapping.technique);
+    if (!technique->supportsShape(mapping.shape))
+        std::cerr << PROGRAM << ": warning: the " << technique->getTechniqueName()
                   << " technique cannot draw " << osgGlyphs::getShapeName(mapping.shape)
-                  << "s; they are drawn with "
-                  << osgGlyphs::getTechniqueName(osgGlyphs::DEFAULT_GLYPH_TECHNIQUE) << std::endl;
+                  << "s; they are drawn with " << osgGlyphs::DEFAULT_GLYPH_TECHNIQUE << std::endl;
     return true;
 }
 
@@ -223,8 +223,7 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--unlit", "Flat colours instead of lit glyphs (key l toggles).");
     usage.addCommandLineOption("--technique <name>",
                                "How glyphs are drawn: " + joinNames(osgGlyphs::getTechniqueNames()) +
-                                   " (default " +
-                                   osgGlyphs::getTechniqueName(osgGlyphs::DEFAULT_GLYPH_TECHNIQUE) + ").");
+                                   " (default " + osgGlyphs::DEFAULT_GLYPH_TECHNIQUE + ").");
 
     usage.addCommandLineOption("--size <w> <h>", "Window or image size in pixels (default 800 600).");
     usage.addCommandLineOption("--camera <ex> <ey> <ez> <cx> <cy> <cz> <ux> <uy> <uz>",

@@ -7,7 +7,7 @@
 
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
-#include <osgGlyphs/GlyphState>
+#include <osgGlyphs/GlyphStateCache>
 
 ViewerScene::ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphsData::ColorKey& key)
     : _source(source), _numFrames(numFrames), _key(key), _root(new osg::Group), _content(new osg::Group)

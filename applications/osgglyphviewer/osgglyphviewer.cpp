@@ -11,6 +11,7 @@
 #include "ViewerScene.h"
 
 #include <osgGlyphs/Version>
+#include <osgGlyphsPaper/Techniques>
 
 #include <osg/ArgumentParser>
 
@@ -20,6 +21,7 @@
 int main(int argc, char** argv)
 {
     const auto start = std::chrono::steady_clock::now();
+    osgGlyphsPaper::registerTechniques(); // --technique offers the paper's techniques too
     osg::ArgumentParser arguments(&argc, argv);
     osg::ApplicationUsage* usage = arguments.getApplicationUsage();
     usage->setApplicationName(PROGRAM);

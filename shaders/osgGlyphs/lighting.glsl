@@ -1,7 +1,5 @@
 // osgGlyphs: Blinn-Phong under OSG's light 0 (the view's headlight or an osg::LightSource).
 
-#pragma import_defines(OSGGLYPHS_LIT)
-
 uniform vec3 osgGlyphs_material; // ambient, specular strength, shininess
 
 /** The lit colour of a surface point; normal and toEye are unit eye-space vectors. */

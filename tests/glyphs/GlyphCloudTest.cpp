@@ -4,6 +4,7 @@
 #include "GlyphTestScenes.h"
 
 #include <osgGlyphs/GlyphCloud>
+#include <osgGlyphs/GlyphStateCache>
 
 #include <osg/MatrixTransform>
 #include <osg/Sequence>
@@ -122,7 +123,7 @@ TEST_F(GlyphCloudData, UpdatesRepackAndReuploadOnlyWhatChanged)
     const ColorMap* viridis = ColorMap::getBuiltin("viridis");
     renderer.render(scene.get());
 
-    const osg::Array* packed = cloud->getVertexAttribArray(osgGlyphs::GlyphStateSets::PACKED_ATTRIBUTE);
+    const osg::Array* packed = cloud->getVertexAttribArray(osgGlyphs::RADIUS_SCALAR_ATTRIBUTE);
     const unsigned int packedCount = packed->getModifiedCount();
     const unsigned int positionCount = cloud->getPositions()->getModifiedCount();
 
@@ -338,10 +339,10 @@ TEST_F(GlyphCloudData, AShaderFileOnTheDataPathOverridesTheEmbeddedCopy)
     const osg::Vec4ub magenta(255, 0, 255, 255);
 
     osgDB::getDataFilePathList().push_front(directory);
-    osgGlyphs::GlyphStateSets::instance()->reloadShaders();
+    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
     const Frame overridden = renderer.render(scene.get());
     osgDB::getDataFilePathList().pop_front();
-    osgGlyphs::GlyphStateSets::instance()->reloadShaders();
+    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
     const Frame restored = renderer.render(scene.get());
 
     EXPECT_TRUE(colorNear(overridden, 80, 60, magenta, 0));

@@ -5,6 +5,7 @@
 #include "GlyphTestScenes.h"
 
 #include <osgGlyphs/GlyphCloud>
+#include <osgGlyphs/GlyphStateCache>
 #include <osgGlyphsHeadless/DepthImage>
 
 #include <osg/Group>

@@ -7,6 +7,8 @@
 #include "GlyphTestScenes.h"
 
 #include <osgGlyphs/GlyphCloud>
+#include <osgGlyphs/GlyphStateCache>
+#include <osgGlyphsPaper/Techniques>
 
 #include <osg/GraphicsContext>
 #include <osg/Texture2DArray>
@@ -18,8 +20,14 @@ using namespace osgGlyphsTest;
 using osgGlyphs::ColorMap;
 using osgGlyphs::GlyphCloud;
 using osgGlyphs::GlyphShape;
-using osgGlyphs::GlyphStateSets;
-using osgGlyphs::GlyphTechnique;
+
+namespace
+{
+
+/** The paper's techniques, by name, beside osgGlyphs' own. */
+const bool PAPER_TECHNIQUES_REGISTERED = (osgGlyphsPaper::registerTechniques(), true);
+
+}
 
 namespace
 {
@@ -76,13 +84,12 @@ Comparison compare(const Frame& a, const Frame& b, int colorTolerance, float dep
 class Techniques : public ::testing::TestWithParam<GlyphShape>
 {
 protected:
-    Frame render(GlyphTechnique technique)
+    Frame render(const std::string& technique)
     {
         osg::ref_ptr<GlyphCloud> cloud = createScene(GetParam());
-        cloud->setTechnique(technique);
+        cloud->setTechnique(osgGlyphs::createTechnique(technique).get());
         const Frame frame = renderer.render(group({cloud.get()}).get());
-        saveFrame(frame, std::string("technique_") + osgGlyphs::getTechniqueName(technique) + "_" +
-                             osgGlyphs::getShapeName(GetParam()));
+        saveFrame(frame, std::string("technique_") + technique + "_" + osgGlyphs::getShapeName(GetParam()));
         return frame;
     }
 
@@ -93,54 +100,51 @@ protected:
 
 TEST_P(Techniques, ExactTechniquesDrawTheSamePixels)
 {
-    const Frame reference = render(GlyphTechnique::GeometryShader);
-    for (GlyphTechnique technique : {GlyphTechnique::Instanced, GlyphTechnique::PointSprite})
+    const Frame reference = render("geometry-shader");
+    for (const std::string technique : {"instanced", "point-sprite"})
     {
         // Rays rebuilt per fragment (point sprites) differ from interpolated ones in the last bits.
         const Comparison comparison = compare(render(technique), reference, 1, 1e-6f);
-        EXPECT_GT(comparison.coveredBoth, 800) << osgGlyphs::getTechniqueName(technique);
-        EXPECT_LE(comparison.differingColor, comparison.coveredBoth / 200)
-            << osgGlyphs::getTechniqueName(technique);
-        EXPECT_LE(comparison.differingDepth, comparison.coveredBoth / 200)
-            << osgGlyphs::getTechniqueName(technique);
+        EXPECT_GT(comparison.coveredBoth, 800) << technique;
+        EXPECT_LE(comparison.differingColor, comparison.coveredBoth / 200) << technique;
+        EXPECT_LE(comparison.differingDepth, comparison.coveredBoth / 200) << technique;
     }
 }
 
 TEST_P(Techniques, PolygonsApproximateTheExactGlyphs)
 {
-    const Frame reference = render(GlyphTechnique::GeometryShader);
+    const Frame reference = render("geometry-shader");
     osg::ref_ptr<GlyphCloud> cloud = createScene(GetParam());
-    cloud->setTechnique(GlyphTechnique::Polygons);
-    cloud->setPolygonResolution(32, 16);
+    osg::ref_ptr<osgGlyphsPaper::PolygonsTechnique> polygons = new osgGlyphsPaper::PolygonsTechnique;
+    polygons->setResolution(32, 16);
+    cloud->setTechnique(polygons.get());
     const Frame fine = renderer.render(group({cloud.get()}).get());
     const Comparison comparison = compare(fine, reference, 255, 1.0f);
     EXPECT_GT(double(comparison.coveredBoth) / comparison.coveredEither, 0.97);
     // The default 8 x 4 tessellation is visibly coarser.
-    const Comparison coarse = compare(render(GlyphTechnique::Polygons), reference, 255, 1.0f);
+    const Comparison coarse = compare(render("polygons"), reference, 255, 1.0f);
     EXPECT_LT(coarse.coveredBoth, comparison.coveredBoth);
 }
 
 TEST_P(Techniques, SpriteTechniquesCoverRoughlyTheGlyphs)
 {
-    const Frame reference = render(GlyphTechnique::GeometryShader);
+    const Frame reference = render("geometry-shader");
     int referenceCovered = 0;
     for (int y = 0; y < reference.height(); ++y)
         for (int x = 0; x < reference.width(); ++x)
             referenceCovered += reference.isCovered(x, y) ? 1 : 0;
-    for (GlyphTechnique technique :
-         {GlyphTechnique::PaperQuad, GlyphTechnique::TextureBlend, GlyphTechnique::TextureMulti})
+    for (const std::string technique : {"paper-quad", "texture-blend", "texture-multi"})
     {
-        if (!osgGlyphs::isTechniqueSupported(technique, GetParam()))
+        if (!osgGlyphs::createTechnique(technique)->supportsShape(GetParam()))
             continue;
         const Comparison comparison = compare(render(technique), reference, 255, 1.0f);
-        EXPECT_GT(double(comparison.coveredBoth) / referenceCovered, 0.6)
-            << osgGlyphs::getTechniqueName(technique);
+        EXPECT_GT(double(comparison.coveredBoth) / referenceCovered, 0.6) << technique;
     }
 }
 
 TEST_P(Techniques, PointsFloorDrawsOnePixelPerGlyph)
 {
-    const Frame frame = render(GlyphTechnique::PointsFloor);
+    const Frame frame = render("points-floor");
     int covered = 0;
     for (int y = 0; y < frame.height(); ++y)
         for (int x = 0; x < frame.width(); ++x)
@@ -149,18 +153,17 @@ TEST_P(Techniques, PointsFloorDrawsOnePixelPerGlyph)
     EXPECT_LE(covered, 9);
 }
 
-TEST(TechniqueNames, RoundTrip)
+TEST(TechniqueNames, EveryRegisteredNameCreatesItsTechnique)
 {
-    for (GlyphTechnique technique : osgGlyphs::getTechniques())
-    {
-        GlyphTechnique parsed = GlyphTechnique::PointsFloor;
-        EXPECT_TRUE(osgGlyphs::parseTechnique(osgGlyphs::getTechniqueName(technique), parsed));
-        EXPECT_EQ(parsed, technique);
-    }
-    GlyphTechnique parsed;
-    EXPECT_TRUE(osgGlyphs::parseTechnique("default", parsed));
-    EXPECT_EQ(parsed, osgGlyphs::DEFAULT_GLYPH_TECHNIQUE);
-    EXPECT_FALSE(osgGlyphs::parseTechnique("raytrace", parsed));
+    const std::vector<std::string> names = osgGlyphs::getTechniqueNames();
+    EXPECT_EQ(names,
+              std::vector<std::string>({"geometry-shader", "instanced", "point-sprite", "paper-quad",
+                                        "polygons", "texture-blend", "texture-multi", "points-floor"}));
+    for (const std::string& name : names)
+        EXPECT_EQ(osgGlyphs::createTechnique(name)->getTechniqueName(), name);
+    EXPECT_STREQ(osgGlyphs::createTechnique("default")->getTechniqueName(),
+                 osgGlyphs::DEFAULT_GLYPH_TECHNIQUE);
+    EXPECT_FALSE(osgGlyphs::createTechnique("raytrace").valid());
 }
 
 INSTANTIATE_TEST_SUITE_P(, Techniques,
@@ -173,21 +176,21 @@ TEST(TechniqueSupport, UnsupportedShapesFallBackToTheDefault)
 {
     for (GlyphShape shape : {GlyphShape::Sphere, GlyphShape::Cone, GlyphShape::Arrow, GlyphShape::Cylinder})
     {
-        for (GlyphTechnique technique : osgGlyphs::getTechniques())
+        for (const std::string& technique : osgGlyphs::getTechniqueNames())
         {
             osg::ref_ptr<GlyphCloud> cloud = createScene(shape);
-            cloud->setTechnique(technique);
-            const bool supported = osgGlyphs::isTechniqueSupported(technique, shape);
-            EXPECT_EQ(cloud->getEffectiveTechnique(),
-                      supported ? technique : osgGlyphs::DEFAULT_GLYPH_TECHNIQUE)
-                << osgGlyphs::getTechniqueName(technique) << " " << osgGlyphs::getShapeName(shape);
+            cloud->setTechnique(osgGlyphs::createTechnique(technique).get());
+            const bool supported = osgGlyphs::createTechnique(technique)->supportsShape(shape);
+            EXPECT_EQ(cloud->getEffectiveTechnique()->getTechniqueName(),
+                      supported ? technique : std::string(osgGlyphs::DEFAULT_GLYPH_TECHNIQUE))
+                << technique << " " << osgGlyphs::getShapeName(shape);
         }
     }
     // The paper's textures are of spheres.
-    for (GlyphTechnique technique : {GlyphTechnique::TextureBlend, GlyphTechnique::TextureMulti})
+    for (const std::string technique : {"texture-blend", "texture-multi"})
     {
-        EXPECT_TRUE(osgGlyphs::isTechniqueSupported(technique, GlyphShape::Sphere));
-        EXPECT_FALSE(osgGlyphs::isTechniqueSupported(technique, GlyphShape::Cone));
+        EXPECT_TRUE(osgGlyphs::createTechnique(technique)->supportsShape(GlyphShape::Sphere));
+        EXPECT_FALSE(osgGlyphs::createTechnique(technique)->supportsShape(GlyphShape::Cone));
     }
 }
 
@@ -250,14 +253,14 @@ const std::vector<ScalarSphere> SCALAR_SPHERES = {{osg::Vec3(-3.0f, 1.5f, 0.9f),
 /** The colour-map colour of texture-multi's layer for a scalar of [0, 63]. */
 osg::Vec4 layerColor(const ColorMap& colorMap, float scalar)
 {
-    const float last = static_cast<float>(osgGlyphs::TEXTURE_MULTI_COLORMAP_LEVELS - 1);
+    const float last = static_cast<float>(osgGlyphsPaper::TEXTURE_MULTI_COLORMAP_LEVELS - 1);
     return colorMap.getColor(std::round(scalar / 63.0f * last) / last);
 }
 
 class TextureMulti : public ::testing::Test
 {
 protected:
-    osg::ref_ptr<GlyphCloud> createScalarSpheres(GlyphTechnique technique = GlyphTechnique::TextureMulti)
+    osg::ref_ptr<GlyphCloud> createScalarSpheres(const std::string& technique = "texture-multi")
     {
         osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
         osg::ref_ptr<osg::FloatArray> radii = new osg::FloatArray, scalars = new osg::FloatArray;
@@ -272,7 +275,7 @@ protected:
         cloud->setRadii(radii.get());
         cloud->setScalars(scalars.get());
         cloud->setScalarRange(0.0f, 63.0f);
-        cloud->setTechnique(technique);
+        cloud->setTechnique(osgGlyphs::createTechnique(technique).get());
         return cloud;
     }
 
@@ -353,8 +356,7 @@ TEST_F(TextureMulti, DrawsWhatTextureBlendDraws)
     // Same sprites, same circle, same lighting: only how the colour gets there differs (a
     // product of 8-bit texels against an 8-bit product, each mipmapped; 3 levels at most seen).
     const Frame multi = renderer.render(group({createScalarSpheres().get()}).get());
-    const Frame blend =
-        renderer.render(group({createScalarSpheres(GlyphTechnique::TextureBlend).get()}).get());
+    const Frame blend = renderer.render(group({createScalarSpheres("texture-blend").get()}).get());
     saveFrame(blend, "texture_blend_scalars");
     const Comparison comparison = compare(multi, blend, 3, 0.0f);
     EXPECT_GT(comparison.coveredBoth, 4000);
@@ -387,7 +389,7 @@ TEST_F(TextureMulti, RgbaColoursTakeTheNearestColourOfTheCube)
     for (size_t i = 0; i < colors.size(); ++i)
         spheres.push_back({SCALAR_SPHERES[i].center, SCALAR_SPHERES[i].radius, colors[i].first});
     osg::ref_ptr<GlyphCloud> cloud = createSphereCloud(spheres, true);
-    cloud->setTechnique(GlyphTechnique::TextureMulti);
+    cloud->setTechnique(new osgGlyphsPaper::TextureMultiTechnique);
     const Frame frame = renderer.render(group({cloud.get()}).get());
     saveFrame(frame, "texture_multi_rgba");
     for (size_t i = 0; i < colors.size(); ++i)
@@ -409,11 +411,11 @@ TEST_F(TextureMulti, OneColourCloudsAreDrawnInExactlyTheirColour)
         cloud->setPositions(new osg::Vec3Array(1, &SCALAR_SPHERES[i].center));
         cloud->setRadius(SCALAR_SPHERES[i].radius);
         cloud->setColor(i == 1 ? sky : orange);
-        cloud->setTechnique(GlyphTechnique::TextureMulti);
+        cloud->setTechnique(new osgGlyphsPaper::TextureMultiTechnique);
         clouds.push_back(cloud);
     }
-    EXPECT_EQ(clouds[0]->getStateSet(), clouds[2]->getStateSet()); // one texture per colour
-    EXPECT_NE(clouds[0]->getStateSet(), clouds[1]->getStateSet());
+    EXPECT_EQ(clouds[0]->getVariantStateSet(), clouds[2]->getVariantStateSet()); // one texture per colour
+    EXPECT_NE(clouds[0]->getVariantStateSet(), clouds[1]->getVariantStateSet());
     osg::ref_ptr<osg::Node> scene = group({clouds[0].get(), clouds[1].get(), clouds[2].get()});
     auto expectColors = [&](const Frame& frame, const std::vector<osg::Vec4>& expected)
     {
@@ -452,12 +454,13 @@ TEST_F(TextureMulti, SpritesAreSharedPerColourMapAndReleasedWithTheSharedState)
     magma->setColorMap(ColorMap::getBuiltin("magma"));
     auto sprites = [](GlyphCloud* cloud)
     {
-        return dynamic_cast<osg::Texture2DArray*>(cloud->getStateSet()->getTextureAttribute(
-            GlyphStateSets::LIT_SPRITES_UNIT, osg::StateAttribute::TEXTURE));
+        return dynamic_cast<const osg::Texture2DArray*>(cloud->getVariantStateSet()->getTextureAttribute(
+            osgGlyphsPaper::LIT_SPRITES_TEXTURE_UNIT, osg::StateAttribute::TEXTURE));
     };
     ASSERT_NE(sprites(a), nullptr);
-    EXPECT_EQ(sprites(a)->getTextureDepth(), static_cast<int>(osgGlyphs::TEXTURE_MULTI_COLORMAP_LEVELS));
-    EXPECT_NE(a->getStateSet(), unlit->getStateSet());
+    EXPECT_EQ(sprites(a)->getTextureDepth(), static_cast<int>(osgGlyphsPaper::TEXTURE_MULTI_COLORMAP_LEVELS));
+    // Lighting is baked into the sprites: lit and unlit clouds share one state.
+    EXPECT_EQ(a->getVariantStateSet(), unlit->getVariantStateSet());
     EXPECT_EQ(sprites(a), sprites(unlit));
     EXPECT_NE(sprites(a), sprites(magma));
 
@@ -470,7 +473,7 @@ TEST_F(TextureMulti, SpritesAreSharedPerColourMapAndReleasedWithTheSharedState)
 
     osg::State* state = renderer.getViewer()->getCamera()->getGraphicsContext()->getState();
     EXPECT_NE(sprites(a)->getTextureObject(state->getContextID()), nullptr);
-    GlyphStateSets::instance()->releaseGLObjects(state);
+    osgGlyphs::GlyphStateCache::instance()->releaseGLObjects(state);
     EXPECT_EQ(sprites(a)->getTextureObject(state->getContextID()), nullptr);
 
     // Loaded again into the context, as into a new context that reuses its ID.

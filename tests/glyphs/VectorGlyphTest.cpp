@@ -4,6 +4,8 @@
 
 #include "GlyphTestScenes.h"
 
+#include <osgGlyphsPaper/Techniques>
+
 #include <osgGlyphs/GlyphCloud>
 
 #include <cmath>
@@ -356,7 +358,7 @@ TEST(PaperCone, DiffersFromTheExactConeWhereThePaperSaysItDoes)
         {osg::Vec3(1.5f, 0.0f, 0.2f), osg::Vec3(1.8f, 1.0f, -0.5f), 0.5f, GREEN}};
     osg::ref_ptr<GlyphCloud> exact = createVectorCloud(GlyphShape::Cone, glyphs);
     osg::ref_ptr<GlyphCloud> paper = createVectorCloud(GlyphShape::Cone, glyphs);
-    paper->setTechnique(osgGlyphs::GlyphTechnique::PaperQuad);
+    paper->setTechnique(new osgGlyphsPaper::PaperQuadTechnique);
     const Frame exactFrame = renderer.render(group({exact.get()}).get());
     const Frame paperFrame = renderer.render(group({paper.get()}).get());
     saveFrame(exactFrame, "paper_cone_vs_exact_exact");

@@ -1,6 +1,8 @@
 #include <osgGlyphs/ColorMap>
 
-#include "Resources.h"
+#include "state/Resources.h"
+
+#include <atomic>
 
 #include <osgDB/fstream>
 
@@ -14,6 +16,12 @@ using namespace osgGlyphs;
 
 namespace
 {
+
+unsigned long long nextSerialNumber()
+{
+    static std::atomic<unsigned long long> s_next{1};
+    return s_next++;
+}
 
 const char* const BUILTIN_NAMES[] = {"viridis", "magma", "cividis", "coolwarm", "grayscale"};
 
@@ -47,15 +55,19 @@ bool parseHex(const std::string& digits, osg::Vec4& color)
 
 }
 
-ColorMap::ColorMap() : _colors{osg::Vec4(0, 0, 0, 1), osg::Vec4(1, 1, 1, 1)} {}
+ColorMap::ColorMap()
+    : _colors{osg::Vec4(0, 0, 0, 1), osg::Vec4(1, 1, 1, 1)}, _serialNumber(nextSerialNumber())
+{
+}
 
-ColorMap::ColorMap(const std::string& name, const std::vector<osg::Vec4>& colors) : _colors(colors)
+ColorMap::ColorMap(const std::string& name, const std::vector<osg::Vec4>& colors)
+    : _colors(colors), _serialNumber(nextSerialNumber())
 {
     setName(name);
 }
 
 ColorMap::ColorMap(const ColorMap& other, const osg::CopyOp& copyop)
-    : osg::Object(other, copyop), _colors(other._colors)
+    : osg::Object(other, copyop), _colors(other._colors), _serialNumber(nextSerialNumber())
 {
 }
 

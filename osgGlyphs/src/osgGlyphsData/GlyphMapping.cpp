@@ -104,7 +104,7 @@ bool getTriple(const PointData& data, const std::vector<std::string>& names,
 void osgGlyphsData::applyGlyphStyle(GlyphCloud& cloud, const GlyphMappingOptions& options)
 {
     cloud.setShape(options.shape);
-    cloud.setTechnique(options.technique);
+    cloud.setTechnique(createTechnique(options.technique).get());
     cloud.setLit(options.lit);
     if (options.colorMap.valid())
         cloud.setColorMap(options.colorMap.get());
@@ -616,7 +616,9 @@ bool setOption(GlyphMappingOptions& options, const std::string& name, const std:
     }
     else if (name == "technique")
     {
-        if (!parseTechnique(value, options.technique))
+        if (createTechnique(value).valid())
+            options.technique = value;
+        else
             error = "'" + value + "': unknown technique (default, " + joinColumns(getTechniqueNames(), ", ") +
                     ")";
     }

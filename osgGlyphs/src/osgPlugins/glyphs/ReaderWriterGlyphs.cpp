@@ -3,6 +3,7 @@
 
 #include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsData/PointReader>
+#include <osgGlyphsPaper/Techniques>
 
 #include <osg/Sequence>
 #include <osgDB/FileNameUtils>
@@ -117,6 +118,7 @@ class ReaderWriterGlyphs : public osgDB::ReaderWriter
 public:
     ReaderWriterGlyphs()
     {
+        osgGlyphsPaper::registerTechniques(); // the technique option offers the paper's too
         supportsExtension(PSEUDO_EXTENSION, "Pseudo-loader: <file>.glyphs reads <file> as glyphs");
         supportsExtension("lammpstrj", "LAMMPS text dump");
         supportsExtension("lammps", "LAMMPS text dump");

@@ -44,33 +44,6 @@ static bool writeShape(osgDB::OutputStream& os, const GlyphCloud& cloud)
     return true;
 }
 
-static bool checkTechnique(const GlyphCloud&)
-{
-    return true;
-}
-
-static bool readTechnique(osgDB::InputStream& is, GlyphCloud& cloud)
-{
-    std::string name;
-    is >> name;
-    osgGlyphs::GlyphTechnique technique;
-    if (!osgGlyphs::parseTechnique(name, technique))
-    {
-        is.throwException("osgGlyphs::GlyphCloud: unknown technique \"" + name + "\"");
-        return false;
-    }
-    cloud.setTechnique(technique);
-    return true;
-}
-
-static bool writeTechnique(osgDB::OutputStream& os, const GlyphCloud& cloud)
-{
-    os << std::string(osgGlyphs::getTechniqueName(cloud.getTechnique())) << std::endl;
-    return true;
-}
-
-static const char* const ANCHOR_NAMES[] = {"tail", "center", "head"};
-
 static bool checkAnchor(const GlyphCloud&)
 {
     return true;
@@ -80,21 +53,19 @@ static bool readAnchor(osgDB::InputStream& is, GlyphCloud& cloud)
 {
     std::string name;
     is >> name;
-    for (int i = 0; i < 3; ++i)
+    osgGlyphs::GlyphAnchor anchor;
+    if (!osgGlyphs::parseAnchor(name, anchor))
     {
-        if (name == ANCHOR_NAMES[i])
-        {
-            cloud.setAnchor(static_cast<osgGlyphs::GlyphAnchor>(i));
-            return true;
-        }
+        is.throwException("osgGlyphs::GlyphCloud: unknown anchor \"" + name + "\"");
+        return false;
     }
-    is.throwException("osgGlyphs::GlyphCloud: unknown anchor \"" + name + "\"");
-    return false;
+    cloud.setAnchor(anchor);
+    return true;
 }
 
 static bool writeAnchor(osgDB::OutputStream& os, const GlyphCloud& cloud)
 {
-    os << std::string(ANCHOR_NAMES[static_cast<int>(cloud.getAnchor())]) << std::endl;
+    os << std::string(osgGlyphs::getAnchorName(cloud.getAnchor())) << std::endl;
     return true;
 }
 
@@ -155,35 +126,16 @@ static bool writeArrowHead(osgDB::OutputStream& os, const GlyphCloud& cloud)
     return true;
 }
 
-static bool checkPolygonResolution(const GlyphCloud&)
-{
-    return true;
-}
-
-static bool readPolygonResolution(osgDB::InputStream& is, GlyphCloud& cloud)
-{
-    unsigned int slices = 0, stacks = 0;
-    is >> slices >> stacks;
-    cloud.setPolygonResolution(slices, stacks);
-    return true;
-}
-
-static bool writePolygonResolution(osgDB::OutputStream& os, const GlyphCloud& cloud)
-{
-    os << cloud.getPolygonSlices() << cloud.getPolygonStacks() << std::endl;
-    return true;
-}
-
 // osg::Geometry is left out of the chain: its arrays and primitive sets are derived from the
-// cloud's own, which are written here. So is osg::Node, whose StateSet would be the shared
-// program variant (shaders and all), chosen again from the cloud's settings on reading.
+// cloud's own, which are written here. The technique is an object with a wrapper of its own
+// (Techniques.cpp; osgdb_serializers_osgglyphspaper for the paper's).
 REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyphs::GlyphCloud,
-                        "osg::Object osg::Drawable osgGlyphs::GlyphCloud")
+                        "osg::Object osg::Node osg::Drawable osgGlyphs::GlyphCloud")
 {
     ADD_USER_SERIALIZER(Shape);
     // The single colour comes before the arrays: setting it later would drop per-glyph colours.
     ADD_VEC4_SERIALIZER(Color, osg::Vec4(0.8f, 0.8f, 0.8f, 1.0f));
-    ADD_USER_SERIALIZER(Technique);
+    ADD_OBJECT_SERIALIZER(Technique, osgGlyphs::GlyphTechnique, NULL);
     ADD_OBJECT_SERIALIZER(Positions, osg::Vec3Array, NULL);
     ADD_FLOAT_SERIALIZER(Radius, 1.0f);
     ADD_OBJECT_SERIALIZER(Radii, osg::FloatArray, NULL);
@@ -198,6 +150,5 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
     ADD_BOOL_SERIALIZER(UniformLength, false);
     ADD_USER_SERIALIZER(Anchor);
     ADD_USER_SERIALIZER(ArrowHead);
-    ADD_USER_SERIALIZER(PolygonResolution);
     ADD_BOOL_SERIALIZER(CompressedAttributes, true);
 }

@@ -1,0 +1,43 @@
+#include <osgGlyphs/GlyphStyle>
+
+#include "EnumNames.h"
+
+using namespace osgGlyphs;
+
+namespace
+{
+
+const std::pair<GlyphShape, const char*> SHAPE_NAMES[] = {{GlyphShape::Sphere, "sphere"},
+                                                          {GlyphShape::Cone, "cone"},
+                                                          {GlyphShape::Arrow, "arrow"},
+                                                          {GlyphShape::Cylinder, "cylinder"}};
+
+const std::pair<GlyphAnchor, const char*> ANCHOR_NAMES[] = {
+    {GlyphAnchor::Tail, "tail"}, {GlyphAnchor::Center, "center"}, {GlyphAnchor::Head, "head"}};
+
+}
+
+const char* osgGlyphs::getShapeName(GlyphShape shape)
+{
+    return detail::nameOf(SHAPE_NAMES, shape);
+}
+
+bool osgGlyphs::parseShape(const std::string& name, GlyphShape& shape)
+{
+    return detail::parseName(SHAPE_NAMES, name, shape);
+}
+
+const char* osgGlyphs::getAnchorName(GlyphAnchor anchor)
+{
+    return detail::nameOf(ANCHOR_NAMES, anchor);
+}
+
+bool osgGlyphs::parseAnchor(const std::string& name, GlyphAnchor& anchor)
+{
+    return detail::parseName(ANCHOR_NAMES, name, anchor);
+}
+
+float osgGlyphs::getAnchorFraction(GlyphAnchor anchor)
+{
+    return anchor == GlyphAnchor::Tail ? 0.0f : anchor == GlyphAnchor::Head ? 1.0f : 0.5f;
+}

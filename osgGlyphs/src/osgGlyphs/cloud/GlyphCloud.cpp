@@ -1,0 +1,330 @@
+#include <osgGlyphs/GlyphCloud>
+#include <osgGlyphs/GlyphStateCache>
+
+#include "../state/ViewState.h"
+
+#include <osg/Uniform>
+#include <osgUtil/CullVisitor>
+
+using namespace osgGlyphs;
+
+namespace
+{
+
+/** Shares an array in a shallow copy and clones it in a deep one. */
+template <class ArrayType>
+osg::ref_ptr<ArrayType> copyArray(const osg::ref_ptr<ArrayType>& array, const osg::CopyOp& copyop)
+{
+    return array.valid() ? static_cast<ArrayType*>(copyop(array.get())) : nullptr;
+}
+
+}
+
+GlyphCloud::GlyphCloud()
+{
+    initialize();
+}
+
+GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
+    : osg::Geometry(other, copyop), _positions(copyArray(other._positions, copyop)),
+      _radii(copyArray(other._radii, copyop)), _colors(copyArray(other._colors, copyop)),
+      _scalars(copyArray(other._scalars, copyop)), _vectors(copyArray(other._vectors, copyop)),
+      _colorMap(other._colorMap),
+      _technique(other._technique.valid() ? static_cast<GlyphTechnique*>(copyop(other._technique.get()))
+                                          : nullptr),
+      _radius(other._radius), _color(other._color), _colorMode(other._colorMode), _shape(other._shape),
+      _anchor(other._anchor), _lengthScale(other._lengthScale), _uniformLength(other._uniformLength),
+      _arrowParams(other._arrowParams), _lit(other._lit), _compressedAttributes(other._compressedAttributes),
+      _autoRange(other._autoRange), _rangeMin(other._rangeMin), _rangeMax(other._rangeMax),
+      _material(other._material)
+{
+    initialize();
+}
+
+void GlyphCloud::initialize()
+{
+    // The cloud's arrays are packed for the GPU; OSG compiles no display list of them.
+    setSupportsDisplayList(false);
+    setUseVertexBufferObjects(true);
+    if (!_technique)
+        _technique = createTechnique(DEFAULT_GLYPH_TECHNIQUE);
+    _packed = new osg::UIntArray;
+    _packed->setPreserveDataType(true); // an integer attribute: glVertexAttribIPointer
+    _unpacked = new osg::Vec2Array;
+    // The cloud's own values, in a StateSet of its own: each copy gets its own.
+    _cloudStateSet = new osg::StateSet;
+    _cloudStateSet->setName("osgGlyphs cloud");
+    _radiusScaleUniform = new osg::Uniform("osgGlyphs_radiusScale", 1.0f);
+    _baseColorUniform = new osg::Uniform("osgGlyphs_baseColor", _color);
+    _scalarToColormapUniform = new osg::Uniform("osgGlyphs_scalarToColormap", osg::Vec2(0.0f, 0.0f));
+    _materialUniform = new osg::Uniform("osgGlyphs_material", _material);
+    _vectorParamsUniform = new osg::Uniform("osgGlyphs_vectorParams", osg::Vec3());
+    _arrowParamsUniform = new osg::Uniform("osgGlyphs_arrowParams", _arrowParams);
+    for (osg::Uniform* uniform :
+         {_radiusScaleUniform.get(), _baseColorUniform.get(), _scalarToColormapUniform.get(),
+          _materialUniform.get(), _vectorParamsUniform.get(), _arrowParamsUniform.get()})
+        _cloudStateSet->addUniform(uniform);
+    updateVectorUniforms();
+    if (!_colorMap)
+        _colorMap = ColorMap::getBuiltin("viridis");
+    updateGlyphs();
+    updateStateSet();
+}
+
+void GlyphCloud::setPositions(osg::Vec3Array* positions)
+{
+    _positions = positions;
+    dirtyGlyphs();
+}
+
+void GlyphCloud::setRadius(float radius)
+{
+    _radius = radius;
+    _radii = nullptr;
+    _packedRadii = PackedSource(); // the single radius is packed like a new array
+    dirtyGlyphs();
+}
+
+void GlyphCloud::setRadii(osg::FloatArray* radii)
+{
+    _radii = radii;
+    dirtyGlyphs();
+}
+
+void GlyphCloud::setColor(const osg::Vec4& color)
+{
+    _color = color;
+    _baseColorUniform->set(color);
+    if (_colorMode != GlyphColorMode::Uniform)
+    {
+        _colorMode = GlyphColorMode::Uniform;
+        _colors = nullptr;
+        _scalars = nullptr;
+        dirtyGlyphs();
+    }
+    updateStateSet(); // a technique's state may be made for the one colour
+}
+
+void GlyphCloud::setColors(osg::Vec4ubArray* colors)
+{
+    _colors = colors;
+    _scalars = nullptr;
+    _colorMode = colors ? GlyphColorMode::RGBA : GlyphColorMode::Uniform;
+    if (colors)
+        colors->setNormalize(true);
+    dirtyGlyphs();
+    updateStateSet();
+}
+
+void GlyphCloud::setScalars(osg::FloatArray* scalars)
+{
+    _scalars = scalars;
+    _colors = nullptr;
+    _colorMode = scalars ? GlyphColorMode::Scalar : GlyphColorMode::Uniform;
+    dirtyGlyphs();
+    updateStateSet();
+}
+
+void GlyphCloud::setShape(GlyphShape shape)
+{
+    _shape = shape;
+    _packedVectors = PackedSource(); // vectors count for vector shapes only
+    dirtyGlyphs();
+    updateStateSet();
+}
+
+void GlyphCloud::setTechnique(GlyphTechnique* technique)
+{
+    _technique = technique ? technique : createTechnique(DEFAULT_GLYPH_TECHNIQUE).get();
+    _builtFor = {};
+    buildPrimitives();
+    updateStateSet();
+}
+
+const GlyphTechnique* GlyphCloud::getEffectiveTechnique() const
+{
+    return _technique->supportsShape(_shape) ? _technique.get() : getDefaultTechnique();
+}
+
+void GlyphCloud::setVectors(osg::Vec3Array* vectors)
+{
+    _vectors = vectors;
+    dirtyGlyphs();
+}
+
+void GlyphCloud::setLengthScale(float lengthScale)
+{
+    _lengthScale = lengthScale;
+    updateVectorUniforms();
+    dirtyBound();
+}
+
+void GlyphCloud::setUniformLength(bool uniformLength)
+{
+    _uniformLength = uniformLength;
+    updateVectorUniforms();
+    dirtyBound();
+}
+
+void GlyphCloud::setAnchor(GlyphAnchor anchor)
+{
+    _anchor = anchor;
+    updateVectorUniforms();
+    dirtyBound();
+}
+
+void GlyphCloud::setArrowHead(float lengthRatio, float radiusRatio)
+{
+    _arrowParams.set(lengthRatio, radiusRatio);
+    _arrowParamsUniform->set(_arrowParams);
+    _builtFor = {}; // a technique may bake the arrow's proportions into its primitives
+    buildPrimitives();
+    dirtyBound();
+}
+
+void GlyphCloud::updateVectorUniforms()
+{
+    _vectorParamsUniform->set(
+        osg::Vec3(_lengthScale, _uniformLength ? 1.0f : 0.0f, getAnchorFraction(_anchor)));
+}
+
+void GlyphCloud::setColorMap(ColorMap* colorMap)
+{
+    _colorMap = colorMap ? colorMap : ColorMap::getBuiltin("viridis");
+    updateStateSet();
+}
+
+void GlyphCloud::setScalarRange(float min, float max)
+{
+    _autoRange = false;
+    _rangeMin = min;
+    _rangeMax = max;
+    if (updateQuantisationRange() && _scalars.valid())
+        packScalars(); // the 16 bits now span another interval
+    updateScalarMapping();
+}
+
+void GlyphCloud::resetScalarRange()
+{
+    _autoRange = true;
+    _rangeMin = _dataMin;
+    _rangeMax = _dataMax;
+    if (updateQuantisationRange() && _scalars.valid())
+        packScalars();
+    updateScalarMapping();
+}
+
+void GlyphCloud::setLit(bool lit)
+{
+    _lit = lit;
+    updateStateSet();
+}
+
+void GlyphCloud::setCompressedAttributes(bool compressed)
+{
+    if (compressed == _compressedAttributes)
+        return;
+    _compressedAttributes = compressed;
+    packRadii();
+    packScalars();
+    buildPrimitives();
+    updateStateSet();
+}
+
+void GlyphCloud::setMaterial(float ambient, float specular, float shininess)
+{
+    _material.set(ambient, specular, shininess);
+    _materialUniform->set(_material);
+}
+
+void GlyphCloud::dirtyGlyphs()
+{
+    updateGlyphs();
+    dirtyBound();
+}
+
+void GlyphCloud::updateStateSet()
+{
+    GlyphVariant variant;
+    variant.shape = _shape;
+    variant.colorMode = _colorMode;
+    variant.lit = _lit;
+    variant.compressedAttributes = _compressedAttributes;
+    variant.colorMap = _colorMap;
+    variant.color = _color;
+    _variantStateSet = GlyphStateCache::instance()->getStateSet(*getEffectiveTechnique(), variant);
+}
+
+GlyphArrays GlyphCloud::getGlyphArrays() const
+{
+    GlyphArrays arrays;
+    arrays.positions = _positions.get();
+    arrays.radiusScalar = _compressedAttributes ? static_cast<osg::Array*>(_packed.get()) : _unpacked.get();
+    arrays.colors = _colorMode == GlyphColorMode::RGBA ? _colors.get() : nullptr;
+    arrays.vectors = hasVectorShape() ? _vectors.get() : nullptr;
+    arrays.count = _numGlyphs;
+    return arrays;
+}
+
+void GlyphCloud::buildPrimitives()
+{
+    const GlyphTechnique* technique = getEffectiveTechnique();
+    const GlyphArrays arrays = getGlyphArrays();
+    const auto builtFor = std::make_tuple(technique, arrays.positions, arrays.radiusScalar, arrays.colors,
+                                          arrays.vectors, arrays.count);
+    if (builtFor == _builtFor && !technique->copiesArrays())
+        return; // the same arrays, drawn the same way: changed contents upload by themselves
+    _builtFor = builtFor;
+    dirtyGLObjects();
+    getVertexAttribArrayList().clear();
+    setVertexArray(nullptr);
+    setNormalArray(nullptr);
+    removePrimitiveSet(0, getNumPrimitiveSets());
+    technique->buildPrimitives(*this, arrays);
+}
+
+double GlyphCloud::getGPUBytesPerGlyph() const
+{
+    if (_numGlyphs == 0)
+        return 0.0;
+    // What the technique uploads: its vertex arrays (copies, for the paper's billboards; a
+    // shared mesh or quad for the instanced ones) and the per-glyph attributes.
+    double bytes = 0.0;
+    for (const osg::Array* array : {getVertexArray(), getNormalArray()})
+        bytes += array ? array->getTotalDataSize() : 0;
+    for (const osg::ref_ptr<osg::Array>& array : getVertexAttribArrayList())
+        bytes += array.valid() ? array->getTotalDataSize() : 0;
+    return bytes / _numGlyphs;
+}
+
+void GlyphCloud::accept(osg::NodeVisitor& nv)
+{
+    osgUtil::CullVisitor* cv = nv.asCullVisitor();
+    if (!cv || !nv.validNodeMask(*this))
+    {
+        osg::Geometry::accept(nv);
+        return;
+    }
+    GlyphStateCache::observeContext(cv->getState()->getContextID());
+    cv->pushStateSet(_variantStateSet.get());
+    cv->pushStateSet(detail::getViewStateSet(*cv));
+    cv->pushStateSet(_cloudStateSet.get());
+    osg::Geometry::accept(nv);
+    cv->popStateSet();
+    cv->popStateSet();
+    cv->popStateSet();
+}
+
+void GlyphCloud::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    osg::Geometry::resizeGLObjectBuffers(maxSize);
+    _variantStateSet->resizeGLObjectBuffers(maxSize);
+    _cloudStateSet->resizeGLObjectBuffers(maxSize);
+}
+
+void GlyphCloud::releaseGLObjects(osg::State* state) const
+{
+    osg::Geometry::releaseGLObjects(state);
+    _variantStateSet->releaseGLObjects(state);
+    _cloudStateSet->releaseGLObjects(state);
+}

@@ -1,0 +1,330 @@
+// GlyphCloud's packing: each job re-packs what depends on the arrays that changed.
+#include <osgGlyphs/GlyphCloud>
+
+#include "HalfFloat.h"
+
+#include <osg/Notify>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace osgGlyphs;
+
+namespace
+{
+
+/** Why a glyph is not drawn. */
+enum SkipReason : uint8_t
+{
+    SKIP_POSITION = 1,
+    SKIP_RADIUS = 2,
+    SKIP_SCALAR = 4,
+    SKIP_VECTOR = 8,
+    SKIP_ZERO_VECTOR = 16
+};
+
+const uint16_t HALF_ONE = 0x3c00;
+
+bool isFinite(const osg::Vec3& v)
+{
+    return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
+
+/** Sets or clears reason in flags; true if flags changed. */
+bool setReason(uint8_t& flags, SkipReason reason, bool applies)
+{
+    const uint8_t updated = applies ? (flags | reason) : (flags & ~reason);
+    const bool changed = updated != flags;
+    flags = updated;
+    return changed;
+}
+
+}
+
+bool GlyphCloud::PackedSource::changedFrom(const osg::Array* current) const
+{
+    return !packed || current != array || (current && current->getModifiedCount() != modifiedCount);
+}
+
+void GlyphCloud::PackedSource::set(const osg::Array* current)
+{
+    packed = true;
+    array = current;
+    modifiedCount = current ? current->getModifiedCount() : 0;
+}
+
+unsigned int GlyphCloud::countGlyphs(bool report) const
+{
+    const size_t numPositions = _positions.valid() ? _positions->size() : 0;
+    size_t count = numPositions;
+    auto limit = [&](const osg::Array* array, const char* what)
+    {
+        if (!array || array->getNumElements() == numPositions)
+            return;
+        if (report)
+            OSG_WARN << "osgGlyphs::GlyphCloud \"" << getName() << "\": the " << what << " array has "
+                     << array->getNumElements() << " values for " << numPositions
+                     << " positions; only the first " << std::min<size_t>(count, array->getNumElements())
+                     << " glyphs are drawn" << std::endl;
+        count = std::min<size_t>(count, array->getNumElements());
+    };
+    limit(_radii.get(), "radius");
+    limit(_colors.get(), "colour");
+    limit(_scalars.get(), "scalar");
+    if (hasVectorShape())
+    {
+        if (!_vectors.valid() && numPositions && report)
+            OSG_INFO << "osgGlyphs::GlyphCloud \"" << getName()
+                     << "\": vector glyphs without vectors; nothing is drawn" << std::endl;
+        count = _vectors.valid() ? count : 0;
+        limit(_vectors.get(), "vector");
+    }
+    return static_cast<unsigned int>(count);
+}
+
+void GlyphCloud::updateGlyphs(bool report)
+{
+    const unsigned int count = countGlyphs(report);
+    const bool resized = count != _numGlyphs || _skipped.size() != count;
+    const osg::Array* vectors = hasVectorShape() ? _vectors.get() : nullptr;
+    const bool positions = resized || _packedPositions.changedFrom(_positions.get());
+    const bool radii = resized || _packedRadii.changedFrom(_radii.get());
+    const bool scalars = resized || _packedScalars.changedFrom(_scalars.get());
+    const bool vectorsChanged = resized || _packedVectors.changedFrom(vectors);
+    _packedPositions.set(_positions.get());
+    _packedRadii.set(_radii.get());
+    _packedScalars.set(_scalars.get());
+    _packedVectors.set(vectors);
+
+    if (resized)
+    {
+        _numGlyphs = count;
+        _skipped.assign(count, 0);
+        _packed->assign(count, 0u);
+        _unpacked->assign(_compressedAttributes ? 0 : count, osg::Vec2());
+    }
+    if (scalars)
+        updateDataRange();
+    if (radii)
+        updateRadiusScale();
+    const std::vector<unsigned int> flipped = updateSkipped(positions, radii, scalars, vectorsChanged);
+    if (radii)
+        packRadii();
+    else if (!flipped.empty())
+    {
+        for (unsigned int i : flipped)
+            packRadius(i);
+        _packed->dirty();
+        _unpacked->dirty();
+    }
+    if (scalars)
+        packScalars();
+    if (report && (positions || radii || scalars || vectorsChanged))
+        reportSkipped();
+    updateScalarMapping();
+    buildPrimitives();
+}
+
+std::vector<unsigned int> GlyphCloud::updateSkipped(bool positions, bool radii, bool scalars, bool vectors)
+{
+    std::vector<unsigned int> flipped;
+    for (unsigned int i = 0; i < _numGlyphs; ++i)
+    {
+        uint8_t& flags = _skipped[i];
+        const bool wasSkipped = flags != 0;
+        if (positions)
+            setReason(flags, SKIP_POSITION, !isFinite((*_positions)[i]));
+        if (radii && _radii.valid())
+            setReason(flags, SKIP_RADIUS, !(std::isfinite((*_radii)[i]) && (*_radii)[i] > 0.0f));
+        else if (radii)
+            setReason(flags, SKIP_RADIUS, false);
+        if (scalars)
+            setReason(flags, SKIP_SCALAR, _scalars.valid() && !std::isfinite((*_scalars)[i]));
+        if (vectors)
+        {
+            const bool vector = hasVectorShape();
+            setReason(flags, SKIP_VECTOR, vector && !isFinite((*_vectors)[i]));
+            setReason(flags, SKIP_ZERO_VECTOR,
+                      vector && isFinite((*_vectors)[i]) && (*_vectors)[i].length2() == 0.0f);
+        }
+        if ((flags != 0) != wasSkipped)
+            flipped.push_back(i);
+    }
+    _numSkipped = 0;
+    for (uint8_t flags : _skipped)
+        _numSkipped += flags != 0 ? 1 : 0;
+    return flipped;
+}
+
+void GlyphCloud::updateDataRange()
+{
+    _dataMin = std::numeric_limits<float>::max();
+    _dataMax = std::numeric_limits<float>::lowest();
+    for (unsigned int i = 0; _scalars.valid() && i < _numGlyphs; ++i)
+    {
+        const float s = (*_scalars)[i];
+        if (std::isfinite(s))
+        {
+            _dataMin = std::min(_dataMin, s);
+            _dataMax = std::max(_dataMax, s);
+        }
+    }
+    if (_dataMin > _dataMax)
+        _dataMin = _dataMax = 0.0f;
+    if (_autoRange)
+    {
+        _rangeMin = _dataMin;
+        _rangeMax = _dataMax;
+    }
+    updateQuantisationRange();
+}
+
+void GlyphCloud::updateRadiusScale()
+{
+    // Radii are stored relative to the largest, which keeps half floats precise at any scale.
+    _radiusScale = _radius;
+    if (_radii.valid())
+    {
+        _radiusScale = 0.0f;
+        for (unsigned int i = 0; i < _numGlyphs; ++i)
+            if (std::isfinite((*_radii)[i]))
+                _radiusScale = std::max(_radiusScale, (*_radii)[i]);
+    }
+    _radiusScaleUniform->set(_radiusScale);
+}
+
+bool GlyphCloud::updateQuantisationRange()
+{
+    // The data's range, narrowed to the colour range where that is narrower: values beyond the
+    // colour range clamp to the same colour anyway, and the 16 bits span what is seen.
+    float lo = _dataMin, hi = _dataMax;
+    const float rangeLo = std::min(_rangeMin, _rangeMax), rangeHi = std::max(_rangeMin, _rangeMax);
+    if (std::isfinite(rangeLo) && std::isfinite(rangeHi) && std::max(lo, rangeLo) < std::min(hi, rangeHi))
+    {
+        lo = std::max(lo, rangeLo);
+        hi = std::min(hi, rangeHi);
+    }
+    const bool changed = lo != _quantisedMin || hi != _quantisedMax;
+    _quantisedMin = lo;
+    _quantisedMax = hi;
+    return changed;
+}
+
+void GlyphCloud::packRadius(unsigned int i)
+{
+    const bool radiusValid = std::isfinite(_radiusScale) && _radiusScale > 0.0f;
+    const float relative = _radii.valid() ? (*_radii)[i] / _radiusScale : 1.0f;
+    const bool drawn = radiusValid && _skipped[i] == 0;
+    const uint16_t half = !drawn ? 0 : _radii.valid() ? detail::toHalf(relative) : HALF_ONE;
+    uint32_t& word = (*_packed)[i];
+    word = (word & 0xffff0000u) | half;
+    if (!_compressedAttributes)
+        (*_unpacked)[i].x() = drawn ? relative : 0.0f;
+}
+
+void GlyphCloud::packRadii()
+{
+    _unpacked->resize(_compressedAttributes ? 0 : _numGlyphs);
+    for (unsigned int i = 0; i < _numGlyphs; ++i)
+        packRadius(i);
+    const bool radiusValid = std::isfinite(_radiusScale) && _radiusScale > 0.0f;
+    if (!radiusValid)
+        _numSkipped = _numGlyphs;
+    _packed->dirty();
+    _unpacked->dirty();
+}
+
+void GlyphCloud::packScalars()
+{
+    // The scalar over the quantisation range: 16 bits in the packed word, or a float in [0, 1]
+    // (beyond it where the data is) when uncompressed.
+    const double span = double(_quantisedMax) - double(_quantisedMin);
+    const double toSteps = span > 0.0 ? 65535.0 / span : 0.0;
+    _unpacked->resize(_compressedAttributes ? 0 : _numGlyphs);
+    for (unsigned int i = 0; i < _numGlyphs; ++i)
+    {
+        const float s = _scalars.valid() ? (*_scalars)[i] : 0.0f;
+        uint32_t steps = 0;
+        if (_scalars.valid() && std::isfinite(s))
+            steps = static_cast<uint32_t>(
+                std::lround(std::clamp((double(s) - _quantisedMin) * toSteps, 0.0, 65535.0)));
+        uint32_t& word = (*_packed)[i];
+        word = (word & 0xffffu) | (steps << 16);
+        if (!_compressedAttributes)
+            (*_unpacked)[i].y() = _scalars.valid() && span > 0.0 && _skipped[i] == 0
+                                      ? static_cast<float>((s - double(_quantisedMin)) / span)
+                                      : 0.0f;
+    }
+    _packed->dirty();
+    _unpacked->dirty();
+}
+
+void GlyphCloud::reportSkipped() const
+{
+    unsigned int counts[5] = {0, 0, 0, 0, 0};
+    for (uint8_t flags : _skipped)
+        for (int bit = 0; bit < 5; ++bit)
+            counts[bit] += (flags >> bit) & 1u;
+    const bool radiusValid = std::isfinite(_radiusScale) && _radiusScale > 0.0f;
+    auto report = [&](unsigned int bad, const char* problem)
+    {
+        if (bad)
+            OSG_WARN << "osgGlyphs::GlyphCloud \"" << getName() << "\": " << bad << " of " << _numGlyphs
+                     << " glyphs " << problem << "; they are skipped" << std::endl;
+    };
+    report(counts[0], "have a non-finite position (NaN or inf)");
+    report(radiusValid ? counts[1] : _numGlyphs, "have a radius that is not finite and > 0");
+    report(counts[2], "have a non-finite scalar (NaN or inf)");
+    report(counts[3], "have a non-finite vector (NaN or inf)");
+    if (counts[4])
+        OSG_INFO << "osgGlyphs::GlyphCloud \"" << getName() << "\": " << counts[4] << " of " << _numGlyphs
+                 << " glyphs have a zero vector and no direction; they are not drawn" << std::endl;
+}
+
+void GlyphCloud::updateScalarMapping()
+{
+    // colormap coordinate = (value - rangeMin) / (rangeMax - rangeMin), where
+    // value = quantisedMin + quantised * (quantisedMax - quantisedMin) and quantised is in [0, 1].
+    const double span = double(_rangeMax) - double(_rangeMin);
+    osg::Vec2 mapping(0.0f, 0.5f);
+    if (span != 0.0 && std::isfinite(span))
+        mapping.set(static_cast<float>((double(_quantisedMax) - _quantisedMin) / span),
+                    static_cast<float>((double(_quantisedMin) - _rangeMin) / span));
+    _scalarToColormapUniform->set(mapping);
+}
+
+osg::BoundingBox GlyphCloud::computeBoundingBox() const
+{
+    const float anchor = getAnchorFraction(_anchor);
+    const float widest = _shape == GlyphShape::Arrow ? std::max(_arrowParams.y(), 1.0f) : 1.0f;
+    osg::BoundingBox box;
+    for (unsigned int i = 0; i < _numGlyphs; ++i)
+    {
+        const uint16_t halfRadius = static_cast<uint16_t>((*_packed)[i] & 0xffffu);
+        if (halfRadius == 0)
+            continue;
+        const float relative = _compressedAttributes ? detail::fromHalf(halfRadius) : (*_unpacked)[i].x();
+        const float radius = relative * _radiusScale * widest;
+        const osg::Vec3 pad(radius, radius, radius);
+        const osg::Vec3& p = (*_positions)[i];
+        if (!hasVectorShape())
+        {
+            box.expandBy(p - pad);
+            box.expandBy(p + pad);
+            continue;
+        }
+        // The glyph lies within its radius of the segment from tail to head.
+        const osg::Vec3& v = (*_vectors)[i];
+        const float magnitude = v.length();
+        const osg::Vec3 axis = v / magnitude;
+        const float length = _uniformLength ? _lengthScale : _lengthScale * magnitude;
+        const osg::Vec3 tail = p - axis * (length * anchor);
+        for (const osg::Vec3& end : {tail, tail + axis * length})
+        {
+            box.expandBy(end - pad);
+            box.expandBy(end + pad);
+        }
+    }
+    return box;
+}

@@ -1,0 +1,38 @@
+/* osgGlyphs - private: the defines that select program variants, and the GLSL generated from
+ * them and from the attribute table. Not installed. */
+
+#ifndef OSGGLYPHS_GLYPHDEFINES_H
+#define OSGGLYPHS_GLYPHDEFINES_H 1
+
+#include <osgGlyphs/GlyphTechnique>
+
+#include <string>
+#include <vector>
+
+namespace osgGlyphs
+{
+namespace detail
+{
+
+extern const char* const FLOAT_ATTRIBUTES_DEFINE;
+extern const char* const COLOR_RGBA_DEFINE;
+extern const char* const VECTOR_SHAPE_DEFINE;
+
+/** The defines of a variant, as its StateSet sets them. */
+std::vector<std::string> getVariantDefines(const GlyphVariant& variant);
+
+/** GLSL every stage includes (osgGlyphs/defines.glsl): the variant defines OSG may set, and
+ * what follows from them. */
+std::string generateDefinesGlsl();
+
+/** GLSL the vertex stage includes (osgGlyphs/attributes.glsl): the technique's attributes, each
+ * declared under its condition. */
+std::string generateAttributesGlsl(const GlyphTechnique& technique);
+
+/** Every attribute of the technique's program: the glyph attributes and its own. */
+std::vector<GlyphAttributeBinding> getProgramAttributes(const GlyphTechnique& technique);
+
+}
+}
+
+#endif

@@ -1,0 +1,186 @@
+#include <osgGlyphs/GlyphStateCache>
+
+#include "GlyphDefines.h"
+
+#include <osg/ContextData>
+#include <osg/GLObjects>
+#include <osg/Uniform>
+
+using namespace osgGlyphs;
+
+namespace
+{
+
+/** Lives in a context's osg::ContextData: when OSG deletes or discards that context's GL
+ * objects, it releases the shared glyph state of that context, which no scene graph under
+ * the context's cameras may reach any more (a later context could reuse the ID). */
+class GlyphContextObserver : public osg::GraphicsObjectManager
+{
+public:
+    explicit GlyphContextObserver(unsigned int contextID)
+        : osg::GraphicsObjectManager("osgGlyphs::GlyphContextObserver", contextID)
+    {
+    }
+    void flushDeletedGLObjects(double, double&) override {}
+    void flushAllDeletedGLObjects() override {}
+    void deleteAllGLObjects() override { release(); }
+    void discardAllGLObjects() override { release(); }
+
+private:
+    void release()
+    {
+        osg::ref_ptr<osg::State> state = new osg::State;
+        state->setContextID(getContextID());
+        GlyphStateCache::instance()->releaseGLObjects(state.get());
+    }
+};
+
+/** The generated files the technique's shaders include. */
+std::map<std::string, std::string> generatedSources(const GlyphTechnique& technique)
+{
+    return {{"osgGlyphs/defines.glsl", detail::generateDefinesGlsl()},
+            {"osgGlyphs/attributes.glsl", detail::generateAttributesGlsl(technique)}};
+}
+
+}
+
+const char* const osgGlyphs::GLYPH_LIT_DEFINE = "OSGGLYPHS_LIT";
+
+void osgGlyphs::setGlyphLighting(osg::StateSet& stateSet, bool lit)
+{
+    stateSet.setDefine(GLYPH_LIT_DEFINE, osg::StateAttribute::OVERRIDE |
+                                             (lit ? osg::StateAttribute::ON : osg::StateAttribute::OFF));
+}
+
+GlyphStateCache* GlyphStateCache::instance()
+{
+    static osg::ref_ptr<GlyphStateCache> s_instance = new GlyphStateCache;
+    return s_instance.get();
+}
+
+osg::Program* GlyphStateCache::getProgramLocked(const GlyphTechnique& technique)
+{
+    osg::ref_ptr<osg::Program>& program = _programs[technique.getTechniqueName()];
+    if (program)
+        return program.get();
+    program = new osg::Program;
+    program->setName(std::string("osgGlyphs ") + technique.getTechniqueName());
+    const std::map<std::string, std::string>& generated = _generated[technique.getTechniqueName()] =
+        generatedSources(technique);
+    for (const GlyphShaderFile& file : technique.getShaderFiles())
+    {
+        osg::ref_ptr<osg::Shader> shader = new osg::Shader(file.type, readShaderSource(file.name, generated));
+        shader->setName(file.name);
+        program->addShader(shader.get());
+    }
+    for (const GlyphAttributeBinding& attribute : detail::getProgramAttributes(technique))
+        program->addBindAttribLocation(attribute.name, attribute.location);
+    return program.get();
+}
+
+osg::Program* GlyphStateCache::getProgram(const GlyphTechnique& technique)
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return getProgramLocked(technique);
+}
+
+osg::ref_ptr<osg::StateSet> GlyphStateCache::getStateSet(const GlyphTechnique& technique,
+                                                         const GlyphVariant& requested)
+{
+    // Fields the technique does not draw with are reset, so that clouds differing there share.
+    GlyphVariant variant = requested;
+    variant.lit = requested.lit && technique.usesLighting();
+    if (variant.colorMode != GlyphColorMode::Scalar)
+        variant.colorMap = nullptr;
+    else if (!variant.colorMap)
+        variant.colorMap = ColorMap::getBuiltin("viridis");
+    if (!technique.usesVariantColor() || variant.colorMode != GlyphColorMode::Uniform)
+        variant.color = osg::Vec4();
+    const Key key(technique.getTechniqueName(), variant.shape, variant.colorMode, variant.lit,
+                  variant.compressedAttributes, variant.colorMap ? variant.colorMap->getSerialNumber() : 0,
+                  variant.color);
+
+    std::lock_guard<std::mutex> lock(_mutex);
+    osg::ref_ptr<osg::StateSet>& stateSet = _stateSets[key];
+    if (!stateSet)
+    {
+        stateSet = createStateSet(technique, variant);
+        if (_stateSets.size() >= _pruneAt)
+        {
+            osg::ref_ptr<osg::StateSet> keep = stateSet;
+            for (auto entry = _stateSets.begin(); entry != _stateSets.end();)
+                entry = entry->second->referenceCount() == 1 ? _stateSets.erase(entry) : std::next(entry);
+            _pruneAt = std::max<std::size_t>(64, 2 * _stateSets.size());
+            return keep;
+        }
+    }
+    return stateSet;
+}
+
+osg::ref_ptr<osg::StateSet> GlyphStateCache::createStateSet(const GlyphTechnique& technique,
+                                                            const GlyphVariant& variant)
+{
+    osg::ref_ptr<osg::StateSet> stateSet = new osg::StateSet;
+    stateSet->setName(std::string("osgGlyphs ") + technique.getTechniqueName());
+    stateSet->setAttributeAndModes(getProgramLocked(technique));
+    for (const std::string& define : detail::getVariantDefines(variant))
+        stateSet->setDefine(define);
+    if (variant.colorMode == GlyphColorMode::Scalar)
+    {
+        stateSet->setTextureAttribute(COLORMAP_TEXTURE_UNIT, variant.colorMap->getTexture());
+        stateSet->addUniform(new osg::Uniform("osgGlyphs_colormap", static_cast<int>(COLORMAP_TEXTURE_UNIT)));
+    }
+    technique.configureStateSet(*stateSet, variant);
+    return stateSet;
+}
+
+unsigned int GlyphStateCache::getNumStateSets() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return static_cast<unsigned int>(_stateSets.size());
+}
+
+void GlyphStateCache::prune()
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    for (auto entry = _stateSets.begin(); entry != _stateSets.end();)
+        entry = entry->second->referenceCount() == 1 ? _stateSets.erase(entry) : std::next(entry);
+}
+
+void GlyphStateCache::reloadShaders()
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    for (const auto& entry : _programs)
+    {
+        osg::Program& program = *entry.second;
+        for (unsigned int i = 0; i < program.getNumShaders(); ++i)
+        {
+            osg::Shader* shader = program.getShader(i);
+            shader->setShaderSource(readShaderSource(shader->getName(), _generated[entry.first]));
+            shader->dirtyShader();
+        }
+    }
+}
+
+void GlyphStateCache::observeContext(unsigned int contextID)
+{
+    osg::get<GlyphContextObserver>(contextID);
+}
+
+void GlyphStateCache::releaseGLObjects(osg::State* state) const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    for (const auto& entry : _programs)
+        entry.second->releaseGLObjects(state);
+    for (const auto& entry : _stateSets)
+        entry.second->releaseGLObjects(state);
+}
+
+void GlyphStateCache::resizeGLObjectBuffers(unsigned int maxSize)
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    for (auto& entry : _programs)
+        entry.second->resizeGLObjectBuffers(maxSize);
+    for (auto& entry : _stateSets)
+        entry.second->resizeGLObjectBuffers(maxSize);
+}

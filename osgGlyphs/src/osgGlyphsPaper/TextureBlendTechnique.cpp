@@ -1,0 +1,30 @@
+#include <osgGlyphsPaper/Techniques>
+
+#include "SpriteTextures.h"
+
+#include <osg/PointSprite>
+#include <osg/Uniform>
+
+using namespace osgGlyphs;
+using namespace osgGlyphsPaper;
+
+bool TextureBlendTechnique::supportsShape(GlyphShape shape) const
+{
+    return shape == GlyphShape::Sphere; // the paper's textures are of spheres
+}
+
+std::vector<GlyphShaderFile> TextureBlendTechnique::getShaderFiles() const
+{
+    return {{osg::Shader::VERTEX, "osgGlyphsPaper/texture-blend.vert"},
+            {osg::Shader::FRAGMENT, "osgGlyphsPaper/texture-blend.frag"}};
+}
+
+void TextureBlendTechnique::configureStateSet(osg::StateSet& stateSet, const GlyphVariant&) const
+{
+    detail::setSpriteModes(stateSet);
+    stateSet.setTextureAttribute(MASK_TEXTURE_UNIT, detail::createSpriteTexture(false));
+    stateSet.setTextureAttribute(LIGHTING_TEXTURE_UNIT, detail::createSpriteTexture(true));
+    stateSet.addUniform(new osg::Uniform("osgGlyphs_maskTexture", static_cast<int>(MASK_TEXTURE_UNIT)));
+    stateSet.addUniform(
+        new osg::Uniform("osgGlyphs_lightingTexture", static_cast<int>(LIGHTING_TEXTURE_UNIT)));
+}

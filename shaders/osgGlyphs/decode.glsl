@@ -1,0 +1,105 @@
+// osgGlyphs: decodes a glyph's vertex attributes (declared in the generated attributes.glsl)
+// into eye space.
+//
+// osgGlyphs_packed, one 32-bit word per glyph:
+//   bits  0..15  radius / osgGlyphs_radiusScale as an IEEE half float (0: skip the glyph)
+//   bits 16..31  scalar, quantised to 0..65535 over the data's own range
+// osgGlyphs_radiusScalar replaces it with uncompressed attributes (OSGGLYPHS_FLOAT_ATTRIBUTES):
+//   radius / osgGlyphs_radiusScale and the scalar in [0, 1] over the data's range, as floats
+// osgGlyphs_color: RGBA8 per glyph (OSGGLYPHS_COLOR_RGBA only).
+// osgGlyphs_vector: direction and magnitude per glyph (vector shapes only).
+// osgGlyphs_position: the glyph's position, for instanced techniques (else gl_Vertex).
+// Vertex stages only.
+
+#include "glyph.glsl"
+#include "attributes.glsl"
+
+uniform float osgGlyphs_radiusScale;
+uniform vec4 osgGlyphs_baseColor;
+#ifdef OSGGLYPHS_COLOR_SCALAR
+uniform sampler1D osgGlyphs_colormap;
+uniform vec2 osgGlyphs_scalarToColormap; // colormap coordinate = quantised * x + y
+#endif
+
+float decodeHalf(uint bits)
+{
+    uint exponent = (bits >> 10u) & 31u;
+    uint mantissa = bits & 1023u;
+    if (exponent == 0u)
+        return float(mantissa) * (1.0 / 16777216.0);
+    return uintBitsToFloat(((bits & 32768u) << 16u) | ((exponent + 112u) << 23u) | (mantissa << 13u));
+}
+
+float glyphRadius()
+{
+#ifdef OSGGLYPHS_FLOAT_ATTRIBUTES
+    return osgGlyphs_radiusScalar.x * osgGlyphs_radiusScale;
+#else
+    return decodeHalf(osgGlyphs_packed & 65535u) * osgGlyphs_radiusScale;
+#endif
+}
+
+#ifdef OSGGLYPHS_COLOR_SCALAR
+/** Where the glyph's scalar falls on the colour map, in [0, 1]. */
+float colormapCoordinate()
+{
+#ifdef OSGGLYPHS_FLOAT_ATTRIBUTES
+    float scalar = osgGlyphs_radiusScalar.y;
+#else
+    float scalar = float(osgGlyphs_packed >> 16u) * (1.0 / 65535.0);
+#endif
+    return clamp(scalar * osgGlyphs_scalarToColormap.x + osgGlyphs_scalarToColormap.y, 0.0, 1.0);
+}
+#endif
+
+vec4 glyphColor()
+{
+#if defined(OSGGLYPHS_COLOR_SCALAR)
+    float t = colormapCoordinate();
+    // Texel i holds the map at i / (size - 1): sample between the first and last texel centres.
+    float size = float(textureSize(osgGlyphs_colormap, 0));
+    return texture(osgGlyphs_colormap, (t * (size - 1.0) + 0.5) / size);
+#elif defined(OSGGLYPHS_COLOR_RGBA)
+    return osgGlyphs_color;
+#else
+    return osgGlyphs_baseColor;
+#endif
+}
+
+vec4 glyphPosition()
+{
+#ifdef OSGGLYPHS_PER_INSTANCE
+    return vec4(osgGlyphs_position, 1.0);
+#else
+    return gl_Vertex;
+#endif
+}
+
+Glyph decodeGlyph()
+{
+    Glyph glyph;
+    vec3 center = (gl_ModelViewMatrix * glyphPosition()).xyz;
+    // A glyph scales with the model-view transform (uniform scale assumed).
+    float scale = length(gl_ModelViewMatrix[0].xyz);
+    glyph.sphere = vec4(center, glyphRadius() * scale);
+    glyph.axis = vec4(0.0);
+    glyph.color = glyphColor();
+#ifdef OSGGLYPHS_VECTOR_SHAPE
+    vec3 vector = mat3(gl_ModelViewMatrix) * osgGlyphs_vector;
+    float magnitude = length(vector);
+    float len = osgGlyphs_vectorParams.y > 0.5 ? osgGlyphs_vectorParams.x * scale : osgGlyphs_vectorParams.x * magnitude;
+    if (!(magnitude > 0.0) || !(len > 0.0))
+        glyph.sphere.w = 0.0; // no direction: not drawn
+    vec3 axis = vector / magnitude;
+    glyph.sphere.xyz = center - axis * (len * osgGlyphs_vectorParams.z);
+    glyph.axis = vec4(axis, len);
+#endif
+    return glyph;
+}
+
+/** Puts this vertex outside the clip volume, so that its primitive draws nothing. */
+void hideVertex()
+{
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    gl_PointSize = 0.0;
+}

@@ -1,0 +1,55 @@
+#version 330 compatibility
+// osgGlyphs, geometry-shader technique: expands each glyph into a screen-space rectangle that
+// bounds it (exactly, for spheres), inside which impostor.frag ray-casts the glyph's surface.
+
+layout(points) in;
+layout(triangle_strip, max_vertices = 4) out;
+
+#include "glyph.glsl"
+#include "projection.glsl"
+#include "sphere.glsl"
+#include "vector.glsl"
+
+#include "bound.glsl"
+
+const float SMALL_GLYPH_PIXELS = 8.0;
+
+in GlyphVertex
+{
+    vec4 sphere;
+    vec4 axis;
+    vec4 color;
+}
+glyphIn[];
+
+#define OSGGLYPHS_VARYINGS_OUT 1
+#include "varyings.glsl"
+
+void main()
+{
+    Glyph glyph = Glyph(glyphIn[0].sphere, glyphIn[0].axis, glyphIn[0].color);
+    if (!isDrawn(glyph))
+        return;
+    vec2 corners[4];
+    float nearestNdcZ;
+    if (!glyphBound(glyph, corners, nearestNdcZ))
+        return;
+    // A glyph of a few pixels gets one triangle of twice the rectangle's area, right-angled at its
+    // first corner: rasterising primitives, not shading fragments, is what small glyphs cost.
+    int numCorners = 4;
+    vec2 toPixels = 0.5 * osgGlyphs_viewport.zw;
+    float longestSide = max(length((corners[1] - corners[0]) * toPixels), length((corners[2] - corners[0]) * toPixels));
+    if (longestSide < SMALL_GLYPH_PIXELS)
+    {
+        corners[1] = 2.0 * corners[1] - corners[0];
+        corners[2] = 2.0 * corners[2] - corners[0];
+        numCorners = 3;
+    }
+    for (int corner = 0; corner < numCorners; ++corner)
+    {
+        writeVaryings(glyph);
+        gl_Position = vec4(corners[corner], nearestNdcZ, 1.0);
+        EmitVertex();
+    }
+    EndPrimitive();
+}

@@ -1,0 +1,22 @@
+#version 330 compatibility
+// osgGlyphs, geometry-shader technique: decodes each glyph into eye space and hands it to
+// geometry-shader.geom, which bounds it on screen.
+
+#include "decode.glsl"
+
+out GlyphVertex
+{
+    vec4 sphere;
+    vec4 axis;
+    vec4 color;
+}
+glyphOut;
+
+void main()
+{
+    Glyph glyph = decodeGlyph();
+    glyphOut.sphere = glyph.sphere;
+    glyphOut.axis = glyph.axis;
+    glyphOut.color = glyph.color;
+    gl_Position = vec4(glyph.sphere.xyz, 1.0);
+}

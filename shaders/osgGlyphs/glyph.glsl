@@ -1,0 +1,25 @@
+// osgGlyphs: a glyph in eye space, and the uniforms every technique's stages share.
+
+#include "defines.glsl"
+
+// Vector glyphs: x = length scale, y = 1 for one length for all glyphs (x), z = anchor
+// (0 tail, 0.5 centre, 1 head on the data point); arrows: x = head length / length,
+// y = head radius / shaft radius.
+uniform vec3 osgGlyphs_vectorParams;
+uniform vec2 osgGlyphs_arrowParams;
+
+// The viewport (x, y, width, height) in pixels: rays through fragments, sizes of point sprites.
+uniform vec4 osgGlyphs_viewport;
+
+/** A glyph in eye space. */
+struct Glyph
+{
+    vec4 sphere; // centre (vector shapes: the tail's base centre), radius (0: not drawn)
+    vec4 axis;   // vector shapes: unit axis, length
+    vec4 color;
+};
+
+bool isDrawn(Glyph glyph)
+{
+    return glyph.sphere.w > 0.0 && !any(isnan(glyph.sphere)) && !any(isinf(glyph.sphere)) && !any(isnan(glyph.axis));
+}
