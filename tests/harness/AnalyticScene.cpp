@@ -1,10 +1,249 @@
 #include "AnalyticScene.h"
 
+#include <glm/glm.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <variant>
+
+// The truth is ray-cast in double precision with the math of the shaders it checks
+// (shaders/osgGlyphs/sphere.glsl and vector.glsl), in GLM's GLSL-like types; osg types at the
+// boundary of the class only.
+
+namespace
+{
+
+using glm::dvec2;
+using glm::dvec3;
+using glm::dvec4;
+
+const double INFINITE_DISTANCE = std::numeric_limits<double>::infinity();
+
+dvec3 toGlm(const osg::Vec3d& v)
+{
+    return dvec3(v.x(), v.y(), v.z());
+}
+
+osg::Vec3d toOsg(const dvec3& v)
+{
+    return osg::Vec3d(v.x, v.y, v.z);
+}
+
+/** GLSL's v.xy. */
+dvec2 xy(const dvec3& v)
+{
+    return dvec2(v.x, v.y);
+}
+
+/** The nearest surface met so far along a ray. */
+struct Hit
+{
+    double t = INFINITE_DISTANCE;
+    dvec3 normal = dvec3(0.0);
+};
+
+struct Sphere
+{
+    dvec4 sphere; // centre, radius
+};
+
+struct Box
+{
+    dvec3 min, max;
+};
+
+/** A square of the given half extent about point, facing both ways. */
+struct Plane
+{
+    dvec3 point, normal;
+    double halfExtent;
+};
+
+/** A solid of revolution about the unit axis from base: radius r0 at z0 to r1 at z1. */
+struct Segment
+{
+    dvec3 base, axis;
+    double z0, r0, z1, r1;
+    bool cap0, cap1;
+};
+
+// sphere.glsl
+
+/** Where the ray origin + t * direction (unit) enters and leaves the sphere; false if it misses. */
+bool intersectSphere(dvec3 origin, dvec3 direction, dvec4 sphere, double& tEnter, double& tLeave)
+{
+    dvec3 m = origin - dvec3(sphere);
+    double b = dot(m, direction);
+    dvec3 closest = m - b * direction;
+    double h2 = sphere.w * sphere.w - dot(closest, closest);
+    if (h2 < 0.0)
+        return false;
+    double h = std::sqrt(h2);
+    tEnter = -b - h;
+    tLeave = -b + h;
+    return true;
+}
+
+// vector.glsl
+
+/** Two unit vectors that complete the axis to a right-handed orthonormal frame. */
+void axisFrame(dvec3 axis, dvec3& u, dvec3& v)
+{
+    dvec3 helper = std::abs(axis.x) < 0.9 ? dvec3(1.0, 0.0, 0.0) : dvec3(0.0, 1.0, 0.0);
+    u = normalize(cross(helper, axis));
+    v = cross(axis, u);
+}
+
+void hitDisc(dvec3 o, dvec3 d, double z, double radius, double facing, double tMin, Hit& best)
+{
+    if (std::abs(d.z) < 1e-15)
+        return;
+    double t = (z - o.z) / d.z;
+    dvec2 p = xy(o) + xy(d) * t;
+    if (t >= tMin && t < best.t && dot(p, p) <= radius * radius)
+    {
+        best.t = t;
+        best.normal = dvec3(0.0, 0.0, facing);
+    }
+}
+
+/** The side of a cylinder or truncated cone: radius r0 at z0 changing linearly to r1 at z1. */
+void hitSide(dvec3 o, dvec3 d, double z0, double r0, double z1, double r1, double tMin, Hit& best)
+{
+    // x^2 + y^2 = (r0 + slope (z - z0))^2, with slope = (r1 - r0) / (z1 - z0).
+    double slope = (r1 - r0) / (z1 - z0);
+    double radiusAtOrigin = r0 + slope * (o.z - z0);
+    double a = dot(xy(d), xy(d)) - slope * slope * d.z * d.z;
+    double b = dot(xy(o), xy(d)) - slope * radiusAtOrigin * d.z;
+    double c = dot(xy(o), xy(o)) - radiusAtOrigin * radiusAtOrigin;
+    double roots[2];
+    if (std::abs(a) < 1e-15)
+    {
+        if (std::abs(b) < 1e-15)
+            return;
+        roots[0] = roots[1] = -c / (2.0 * b);
+    }
+    else
+    {
+        double discriminant = b * b - a * c;
+        if (discriminant < 0.0)
+            return;
+        double s = std::sqrt(discriminant);
+        roots[0] = std::min((-b - s) / a, (-b + s) / a);
+        roots[1] = std::max((-b - s) / a, (-b + s) / a);
+    }
+    for (double t : roots)
+    {
+        double z = o.z + d.z * t;
+        double radiusAtHit = r0 + slope * (z - z0);
+        if (t >= tMin && t < best.t && z >= z0 && z <= z1 && radiusAtHit >= 0.0)
+        {
+            dvec2 p = xy(o) + xy(d) * t;
+            best.t = t;
+            best.normal = normalize(dvec3(p, -slope * radiusAtHit));
+            return;
+        }
+    }
+}
+
+// Each solid: whether the ray meets it at tMin or beyond and nearer than nearest, which it updates.
+
+bool hitSolid(const Sphere& solid, dvec3 origin, dvec3 direction, double tMin, Hit& nearest)
+{
+    double tEnter, tLeave;
+    if (!intersectSphere(origin, direction, solid.sphere, tEnter, tLeave))
+        return false;
+    double t = tEnter >= tMin ? tEnter : tLeave;
+    if (t < tMin || t >= nearest.t)
+        return false;
+    nearest.t = t;
+    nearest.normal = (origin + direction * t - dvec3(solid.sphere)) / solid.sphere.w;
+    return true;
+}
+
+bool hitSolid(const Segment& solid, dvec3 origin, dvec3 direction, double tMin, Hit& nearest)
+{
+    dvec3 u, v;
+    axisFrame(solid.axis, u, v);
+    dvec3 relative = origin - solid.base;
+    dvec3 o = dvec3(dot(relative, u), dot(relative, v), dot(relative, solid.axis));
+    dvec3 d = dvec3(dot(direction, u), dot(direction, v), dot(direction, solid.axis));
+    Hit local;
+    local.t = nearest.t;
+    hitSide(o, d, solid.z0, solid.r0, solid.z1, solid.r1, tMin, local);
+    if (solid.cap0)
+        hitDisc(o, d, solid.z0, solid.r0, -1.0, tMin, local);
+    if (solid.cap1)
+        hitDisc(o, d, solid.z1, solid.r1, 1.0, tMin, local);
+    if (local.t >= nearest.t)
+        return false;
+    nearest.t = local.t;
+    nearest.normal = local.normal.x * u + local.normal.y * v + local.normal.z * solid.axis;
+    return true;
+}
+
+/** The slabs of the box; the normal is that of the face the ray enters. */
+bool hitSolid(const Box& solid, dvec3 origin, dvec3 direction, double tMin, Hit& nearest)
+{
+    double tNear = -INFINITE_DISTANCE, tFar = INFINITE_DISTANCE;
+    int nearAxis = 0;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        if (std::abs(direction[axis]) < 1e-300)
+        {
+            if (origin[axis] < solid.min[axis] || origin[axis] > solid.max[axis])
+                return false;
+            continue;
+        }
+        double t0 = (solid.min[axis] - origin[axis]) / direction[axis];
+        double t1 = (solid.max[axis] - origin[axis]) / direction[axis];
+        if (t0 > t1)
+            std::swap(t0, t1);
+        if (t0 > tNear)
+        {
+            tNear = t0;
+            nearAxis = axis;
+        }
+        tFar = std::min(tFar, t1);
+    }
+    if (tNear > tFar || tNear < tMin || tNear >= nearest.t)
+        return false;
+    nearest.t = tNear;
+    nearest.normal = dvec3(0.0);
+    nearest.normal[nearAxis] = direction[nearAxis] > 0.0 ? -1.0 : 1.0;
+    return true;
+}
+
+bool hitSolid(const Plane& solid, dvec3 origin, dvec3 direction, double tMin, Hit& nearest)
+{
+    double denominator = dot(solid.normal, direction);
+    if (std::abs(denominator) < 1e-300)
+        return false;
+    double t = dot(solid.point - origin, solid.normal) / denominator;
+    dvec3 offset = origin + direction * t - solid.point;
+    if (t < tMin || t >= nearest.t || any(greaterThan(abs(offset), dvec3(solid.halfExtent))))
+        return false;
+    nearest.t = t;
+    nearest.normal = denominator < 0.0 ? solid.normal : -solid.normal;
+    return true;
+}
+
+}
 
 namespace osgGlyphsTest
 {
+
+struct AnalyticScene::Primitive
+{
+    std::variant<Sphere, Box, Plane, Segment> solid;
+    int label;
+};
+
+AnalyticScene::AnalyticScene() = default;
+AnalyticScene::AnalyticScene(const AnalyticScene& other) = default;
+AnalyticScene& AnalyticScene::operator=(const AnalyticScene& other) = default;
+AnalyticScene::~AnalyticScene() = default;
 
 int AnalyticScene::add(const Primitive& primitive)
 {
@@ -16,41 +255,24 @@ int AnalyticScene::add(const Primitive& primitive)
 
 int AnalyticScene::addSphere(const osg::Vec3d& center, double radius)
 {
-    Primitive p{Primitive::SPHERE, center, osg::Vec3d(radius, 0.0, 0.0)};
-    p.label = -1;
-    return add(p);
+    return add(Primitive{Sphere{dvec4(toGlm(center), radius)}, -1});
 }
 
 int AnalyticScene::addBox(const osg::Vec3d& min, const osg::Vec3d& max)
 {
-    Primitive p{Primitive::BOX, min, max};
-    p.label = -1;
-    return add(p);
+    return add(Primitive{Box{toGlm(min), toGlm(max)}, -1});
 }
 
 int AnalyticScene::addPlane(const osg::Vec3d& point, const osg::Vec3d& normal, double halfExtent)
 {
-    osg::Vec3d unit = normal;
-    unit.normalize();
-    Primitive p{Primitive::PLANE, point, unit, halfExtent};
-    p.label = -1;
-    return add(p);
+    return add(Primitive{Plane{toGlm(point), glm::normalize(toGlm(normal)), halfExtent}, -1});
 }
 
 int AnalyticScene::addSegment(const osg::Vec3d& base, const osg::Vec3d& axis, double z0, double r0, double z1,
                               double r1, bool capAtZ0, bool capAtZ1, int label)
 {
-    osg::Vec3d unit = axis;
-    unit.normalize();
-    Primitive p{Primitive::SEGMENT, base, unit};
-    p.label = label;
-    p.z0 = z0;
-    p.r0 = r0;
-    p.z1 = z1;
-    p.r1 = r1;
-    p.cap0 = capAtZ0;
-    p.cap1 = capAtZ1;
-    return add(p);
+    const Segment segment{toGlm(base), glm::normalize(toGlm(axis)), z0, r0, z1, r1, capAtZ0, capAtZ1};
+    return add(Primitive{segment, label});
 }
 
 int AnalyticScene::addCylinder(const osg::Vec3d& tail, const osg::Vec3d& axis, double length, double radius)
@@ -71,154 +293,24 @@ int AnalyticScene::addArrow(const osg::Vec3d& tail, const osg::Vec3d& axis, doub
     return addSegment(tail, axis, headStart, radius * headRadius, length, 0.0, true, false, label);
 }
 
-bool AnalyticScene::intersectSegment(const Primitive& p, const osg::Vec3d& origin,
-                                     const osg::Vec3d& direction, double minDistance, double& distance,
-                                     osg::Vec3d& normal) const
-{
-    // A frame with the axis along z.
-    const osg::Vec3d helper = std::fabs(p.b.x()) < 0.9 ? osg::Vec3d(1, 0, 0) : osg::Vec3d(0, 1, 0);
-    osg::Vec3d u = helper ^ p.b;
-    u.normalize();
-    const osg::Vec3d v = p.b ^ u;
-    const osg::Vec3d rel = origin - p.a;
-    const osg::Vec3d o(rel * u, rel * v, rel * p.b), d(direction * u, direction * v, direction * p.b);
-    distance = std::numeric_limits<double>::infinity();
-    osg::Vec3d local;
-    auto consider = [&](double t, const osg::Vec3d& n)
-    {
-        if (t >= minDistance && t < distance)
-        {
-            distance = t;
-            local = n;
-        }
-    };
-    // The side: x^2 + y^2 = (r0 + slope (z - z0))^2.
-    const double slope = (p.r1 - p.r0) / (p.z1 - p.z0);
-    const double rho = p.r0 + slope * (o.z() - p.z0);
-    const double a = d.x() * d.x() + d.y() * d.y() - slope * slope * d.z() * d.z();
-    const double b = o.x() * d.x() + o.y() * d.y() - slope * rho * d.z();
-    const double c = o.x() * o.x() + o.y() * o.y() - rho * rho;
-    const double discriminant = b * b - a * c;
-    if (std::fabs(a) > 1e-15 && discriminant >= 0.0)
-    {
-        for (double sign : {-1.0, 1.0})
-        {
-            const double t = (-b + sign * std::sqrt(discriminant)) / a;
-            const osg::Vec3d hit = o + d * t;
-            const double radius = p.r0 + slope * (hit.z() - p.z0);
-            if (hit.z() >= p.z0 && hit.z() <= p.z1 && radius >= 0.0)
-            {
-                osg::Vec3d n(hit.x(), hit.y(), -slope * radius);
-                n.normalize();
-                consider(t, n);
-            }
-        }
-    }
-    auto cap = [&](bool present, double z, double radius, double facing)
-    {
-        if (!present || std::fabs(d.z()) < 1e-15)
-            return;
-        const double t = (z - o.z()) / d.z();
-        const osg::Vec3d hit = o + d * t;
-        if (hit.x() * hit.x() + hit.y() * hit.y() <= radius * radius)
-            consider(t, osg::Vec3d(0.0, 0.0, facing));
-    };
-    cap(p.cap0, p.z0, p.r0, -1.0);
-    cap(p.cap1, p.z1, p.r1, 1.0);
-    if (distance == std::numeric_limits<double>::infinity())
-        return false;
-    normal = u * local.x() + v * local.y() + p.b * local.z();
-    return true;
-}
-
-bool AnalyticScene::intersect(const Primitive& p, const osg::Vec3d& origin, const osg::Vec3d& direction,
-                              double minDistance, double& distance, osg::Vec3d& normal) const
-{
-    switch (p.kind)
-    {
-    case Primitive::SEGMENT:
-        return intersectSegment(p, origin, direction, minDistance, distance, normal);
-    case Primitive::SPHERE:
-    {
-        const double radius = p.b.x();
-        const osg::Vec3d m = origin - p.a;
-        const double b = m * direction;
-        const osg::Vec3d closest = m - direction * b;
-        const double h2 = radius * radius - closest * closest;
-        if (h2 < 0.0)
-            return false;
-        const double h = std::sqrt(h2);
-        distance = -b - h >= minDistance ? -b - h : -b + h;
-        if (distance < minDistance)
-            return false;
-        normal = (origin + direction * distance - p.a) / radius;
-        return true;
-    }
-    case Primitive::BOX:
-    {
-        double tNear = -1e300, tFar = 1e300;
-        int nearAxis = 0;
-        for (int axis = 0; axis < 3; ++axis)
-        {
-            if (std::fabs(direction[axis]) < 1e-300)
-            {
-                if (origin[axis] < p.a[axis] || origin[axis] > p.b[axis])
-                    return false;
-                continue;
-            }
-            double t0 = (p.a[axis] - origin[axis]) / direction[axis];
-            double t1 = (p.b[axis] - origin[axis]) / direction[axis];
-            if (t0 > t1)
-                std::swap(t0, t1);
-            if (t0 > tNear)
-            {
-                tNear = t0;
-                nearAxis = axis;
-            }
-            tFar = std::min(tFar, t1);
-        }
-        if (tNear > tFar || tNear < minDistance)
-            return false;
-        distance = tNear;
-        normal = osg::Vec3d();
-        normal[nearAxis] = direction[nearAxis] > 0.0 ? -1.0 : 1.0;
-        return true;
-    }
-    case Primitive::PLANE:
-    {
-        const double denominator = p.b * direction;
-        if (std::fabs(denominator) < 1e-300)
-            return false;
-        distance = ((p.a - origin) * p.b) / denominator;
-        const osg::Vec3d offset = origin + direction * distance - p.a;
-        if (distance < minDistance || std::fabs(offset.x()) > p.extent || std::fabs(offset.y()) > p.extent ||
-            std::fabs(offset.z()) > p.extent)
-            return false;
-        normal = denominator < 0.0 ? p.b : -p.b;
-        return true;
-    }
-    }
-    return false;
-}
-
 RayHit AnalyticScene::cast(const osg::Vec3d& origin, const osg::Vec3d& direction, double minDistance) const
 {
-    RayHit nearest;
-    for (size_t i = 0; i < _primitives.size(); ++i)
+    const dvec3 o = toGlm(origin), d = toGlm(direction);
+    Hit nearest;
+    RayHit result;
+    for (const Primitive& primitive : _primitives)
     {
-        double distance = 0.0;
-        osg::Vec3d normal;
-        if (intersect(_primitives[i], origin, direction, minDistance, distance, normal) &&
-            distance < nearest.distance)
-        {
-            nearest.label = _primitives[i].label;
-            nearest.distance = distance;
-            nearest.normal = normal;
-        }
+        const auto hit = [&](const auto& solid) { return hitSolid(solid, o, d, minDistance, nearest); };
+        if (std::visit(hit, primitive.solid))
+            result.label = primitive.label;
     }
-    if (nearest.hit())
-        nearest.point = origin + direction * nearest.distance;
-    return nearest;
+    if (result.hit())
+    {
+        result.distance = nearest.t;
+        result.point = toOsg(o + d * nearest.t);
+        result.normal = toOsg(nearest.normal);
+    }
+    return result;
 }
 
 RayHit AnalyticScene::castPixel(const Frame& frame, int x, int y, double dx, double dy) const

@@ -27,6 +27,11 @@ struct RayHit
 class AnalyticScene
 {
 public:
+    AnalyticScene();
+    AnalyticScene(const AnalyticScene& other);
+    AnalyticScene& operator=(const AnalyticScene& other);
+    ~AnalyticScene();
+
     /** Each add returns the primitive's label. */
     int addSphere(const osg::Vec3d& center, double radius);
     int addBox(const osg::Vec3d& min, const osg::Vec3d& max);
@@ -60,26 +65,9 @@ public:
     static const int AMBIGUOUS = -2;
 
 private:
-    struct Primitive
-    {
-        enum Kind
-        {
-            SPHERE,
-            BOX,
-            PLANE,
-            SEGMENT
-        } kind;
-        osg::Vec3d a, b; // sphere: center, (radius, 0, 0); box: min, max; plane and segment: point, axis
-        double extent = 0.0;
-        int label = 0;
-        double z0 = 0.0, r0 = 0.0, z1 = 0.0, r1 = 0.0; // segment
-        bool cap0 = false, cap1 = false;
-    };
+    /** A solid in GLM's double-precision types, as the shaders' math has it (AnalyticScene.cpp). */
+    struct Primitive;
     int add(const Primitive& primitive);
-    bool intersectSegment(const Primitive& p, const osg::Vec3d& origin, const osg::Vec3d& direction,
-                          double minDistance, double& distance, osg::Vec3d& normal) const;
-    bool intersect(const Primitive& primitive, const osg::Vec3d& origin, const osg::Vec3d& direction,
-                   double minDistance, double& distance, osg::Vec3d& normal) const;
 
     std::vector<Primitive> _primitives;
     int _numLabels = 0;

@@ -1,4 +1,5 @@
-// Checks the images osgglyphviewer writes, for the viewer tests (tests/viewer/*.cmake, *.sh).
+// Checks the images osgglyphviewer writes, for the viewer tests (tests/viewer/*.cmake, *.sh),
+// and those of osgglyphexample (tests/example) and of stock osgviewer (tests/osgdb).
 //
 //   osgglyphviewer_image_check depth FILE.pfm W H FOV EYE_Z RADIUS X Y Z [X Y Z ...]
 //       FILE.pfm is W x H, its corners are +inf (background), and at the pixel where each sphere's

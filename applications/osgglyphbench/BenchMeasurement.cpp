@@ -1,0 +1,138 @@
+#include "BenchMeasurement.h"
+
+#include "BenchText.h"
+
+#include <osgGlyphs/GlyphCloud>
+#include <osgGlyphsData/RandomCloud>
+#include <osgGlyphsHeadless/OffscreenViewer>
+
+#include <osg/Geode>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+namespace
+{
+
+/** The glyphs of a case and their GPU bytes per glyph. */
+osg::ref_ptr<osgGlyphs::GlyphCloud> createCloud(const BenchCase& c, float radius,
+                                                const BenchSettings& settings, double& bytesPerGlyph)
+{
+    osgGlyphsData::RandomCloudOptions options;
+    options.count = c.n;
+    options.seed = settings.seed;
+    options.shape = c.shape;
+    options.radius = radius;
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(options);
+    cloud->setTechnique(osgGlyphs::createTechnique(c.technique).get());
+    cloud->setCompressedAttributes(settings.compressedAttributes);
+    cloud->setUseDisplayList(false);
+    cloud->setUseVertexBufferObjects(settings.dataPath == DataPath::VBO);
+    bytesPerGlyph = cloud->getGPUBytesPerGlyph();
+    return cloud;
+}
+
+/** Looks at the unit cube's centre from a distance that fits its bounding sphere into the
+ * viewer's 30 degree field of view, orbiting 1 degree per frame. */
+void placeCamera(osgGlyphsHeadless::OffscreenViewer& viewer, unsigned int frame)
+{
+    const osg::Vec3d centre(0.5, 0.5, 0.5);
+    const double distance = 0.5 * std::sqrt(3.0) / std::sin(osg::DegreesToRadians(15.0));
+    const double azimuth = osg::DegreesToRadians(30.0 + frame);
+    const double elevation = osg::DegreesToRadians(20.0);
+    const osg::Vec3d direction(std::cos(elevation) * std::cos(azimuth),
+                               std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
+    viewer.getCamera()->setViewMatrixAsLookAt(centre - direction * distance, centre,
+                                              osg::Vec3d(0.0, 0.0, 1.0));
+}
+
+double timeFrame(osgGlyphsHeadless::OffscreenViewer& viewer, unsigned int frame)
+{
+    placeCamera(viewer, frame);
+    const auto start = std::chrono::steady_clock::now();
+    viewer.frame();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+double median(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    const size_t middle = values.size() / 2;
+    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
+
+/** The fraction of pixels the scene drew on (the clear colour is transparent black). */
+double getCoverage(const osg::Image& image)
+{
+    const unsigned char* pixels = image.data();
+    const size_t count = static_cast<size_t>(image.s()) * image.t();
+    if (!pixels || count == 0)
+        return 0.0;
+    size_t covered = 0;
+    for (size_t i = 0; i < count; ++i)
+        covered += (pixels[4 * i] | pixels[4 * i + 1] | pixels[4 * i + 2] | pixels[4 * i + 3]) != 0;
+    return static_cast<double>(covered) / count;
+}
+
+/** A fresh viewer of the settings' size, realized, reading back colour only. */
+osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> createViewer(const BenchSettings& settings, osg::Node* scene)
+{
+    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer =
+        new osgGlyphsHeadless::OffscreenViewer(settings.width, settings.height, settings.backend);
+    if (!viewer->valid())
+        return nullptr;
+    viewer->getFrameCapture()->setCaptureDepth(false);
+    viewer->getCamera()->setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
+    viewer->setSceneData(scene);
+    viewer->realize();
+    return viewer;
+}
+
+/** Times one warm-up frame and then settings.frames frames; false without a context. */
+bool measure(const BenchSettings& settings, osg::Node* scene, double& firstFrameMs,
+             std::vector<double>& frameMs, osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer>& viewer)
+{
+    viewer = createViewer(settings, scene);
+    if (!viewer)
+        return false;
+    firstFrameMs = timeFrame(*viewer, 0);
+    frameMs.clear();
+    for (unsigned int frame = 1; frame <= settings.frames; ++frame)
+        frameMs.push_back(timeFrame(*viewer, frame));
+    return true;
+}
+
+}
+
+bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings, BenchResult& result,
+                 std::string& renderer)
+{
+    result = BenchResult{c.technique, c.shape, c.n, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, radius};
+    osg::ref_ptr<osg::Geode> scene = new osg::Geode;
+    scene->addDrawable(createCloud(c, radius, settings, result.bytesPerGlyph).get());
+    std::vector<double> frameMs;
+    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer;
+    if (!measure(settings, scene.get(), result.firstFrameMs, frameMs, viewer))
+        return false;
+    result.msMedian = median(frameMs);
+    result.msMin = *std::min_element(frameMs.begin(), frameMs.end());
+    result.msMax = *std::max_element(frameMs.begin(), frameMs.end());
+    result.coverage = getCoverage(*viewer->getColorImage());
+    renderer = viewer->getFrameCapture()->getGLRenderer();
+    return true;
+}
+
+void printFrameOverhead(const BenchSettings& settings)
+{
+    double firstFrameMs = 0.0;
+    std::vector<double> frameMs;
+    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer;
+    osg::ref_ptr<osg::Group> empty = new osg::Group;
+    if (measure(settings, empty.get(), firstFrameMs, frameMs, viewer))
+        std::cout << "Empty frame (clear + colour read-back, " << settings.width << "x" << settings.height
+                  << "): median " << formatMs(median(frameMs)) << " ms, with "
+                  << viewer->getFrameCapture()->getGLRenderer() << std::endl;
+}

@@ -1,0 +1,44 @@
+// osgglyphbench: measuring one case: its scene, its frames, their times and what they cover.
+
+#ifndef OSGGLYPHBENCH_BENCHMEASUREMENT_H
+#define OSGGLYPHBENCH_BENCHMEASUREMENT_H 1
+
+#include "BenchOptions.h"
+
+#include <osgGlyphs/GlyphTechnique>
+
+#include <string>
+
+/** One case to measure: a technique drawing n glyphs of a shape. */
+struct BenchCase
+{
+    std::string technique;
+    osgGlyphs::GlyphShape shape;
+    unsigned int n;
+};
+
+/** One measured case: a row of the CSV. */
+struct BenchResult
+{
+    std::string technique;
+    osgGlyphs::GlyphShape shape;
+    unsigned int n;
+    double msMedian;
+    double msMin;
+    double msMax;
+    double firstFrameMs;
+    double bytesPerGlyph;
+    double coverage;
+    float radius;
+};
+
+/** Measures one case, a random cloud of glyphs of this radius, in a fresh headless viewer: one
+ * warm-up frame and then settings.frames timed frames. False without a headless context. The
+ * renderer string is filled in. */
+bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings, BenchResult& result,
+                 std::string& renderer);
+
+/** Prints the cost of a frame that draws nothing: clearing and reading the colour buffer back. */
+void printFrameOverhead(const BenchSettings& settings);
+
+#endif

@@ -1,0 +1,57 @@
+// osgglyphbench: the command line.
+
+#ifndef OSGGLYPHBENCH_BENCHOPTIONS_H
+#define OSGGLYPHBENCH_BENCHOPTIONS_H 1
+
+#include <osgGlyphs/GlyphTechnique>
+#include <osgGlyphsHeadless/HeadlessContext>
+
+#include <osg/ApplicationUsage>
+#include <osg/ArgumentParser>
+
+#include <string>
+#include <vector>
+
+/** The program's name in messages. */
+extern const char* const PROGRAM;
+
+/** How vertex data reaches the GPU (paper section 3). */
+enum class DataPath
+{
+    VBO,
+    ClientArrays
+};
+
+/** "vbo" or "client-arrays", as --data-path and the CSV spell it. */
+const char* getDataPathName(DataPath path);
+
+/** Everything the command line sets. */
+struct BenchSettings
+{
+    std::vector<std::string> techniques = osgGlyphs::getTechniqueNames();
+    std::vector<osgGlyphs::GlyphShape> shapes = {osgGlyphs::GlyphShape::Sphere};
+    std::vector<unsigned int> counts = {100, 316, 1000, 3162, 10000, 31623, 100000, 316228, 1000000};
+    int width = 800;
+    int height = 600;
+    unsigned int frames = 10;
+    float radius = 0.0f; // <= 0: getDefaultRandomRadius(n)
+    bool equalCoverage = false;
+    unsigned int seed = 1;
+    double maxMs = 0.0; // 0: no limit
+    std::string csvFile;
+    std::string plotFile;
+    DataPath dataPath = DataPath::VBO;
+    bool compressedAttributes = true;
+    osgGlyphsHeadless::HeadlessBackend backend = osgGlyphsHeadless::HeadlessBackend::Default;
+};
+
+/** Lists every option in usage. */
+void describeBenchOptions(osg::ApplicationUsage& usage);
+
+/** Prints what the benchmark measures and how, the options of usage and the CSV columns. */
+void printBenchHelp(osg::ApplicationUsage& usage);
+
+/** Reads the settings; false when the command line is wrong (the errors are in arguments). */
+bool readBenchSettings(osg::ArgumentParser& arguments, BenchSettings& settings);
+
+#endif

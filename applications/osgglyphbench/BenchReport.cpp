@@ -1,0 +1,91 @@
+#include "BenchReport.h"
+
+#include "BenchText.h"
+
+#include <iomanip>
+#include <iostream>
+
+const char* const CSV_HEADER = "technique,shape,n,width,height,frames,ms_median,ms_min,ms_max,first_frame_ms,"
+                               "gpu_bytes_per_glyph,data_path,coverage,radius,attributes";
+
+namespace
+{
+
+std::string formatRatio(const BenchResult& result, const BenchResult* reference)
+{
+    if (!reference)
+        return "-";
+    const double ratio = result.msMedian / reference->msMedian;
+    return format(ratio, ratio >= 10.0 ? 1 : ratio >= 1.0 ? 2 : 3) + "x";
+}
+
+void printSummaryRow(const BenchResult& result, const BenchResult* floor, const BenchResult* polygons)
+{
+    std::cout << std::left << std::setw(10) << osgGlyphs::getShapeName(result.shape) << std::setw(10)
+              << result.n << std::setw(18) << result.technique << std::right << std::setw(10)
+              << formatMs(result.msMedian) << std::setw(12) << formatRatio(result, floor) << std::setw(12)
+              << formatRatio(result, polygons) << "\n";
+}
+
+}
+
+std::string getProgressPrefix(std::size_t index, std::size_t total, const BenchCase& c)
+{
+    return "[" + std::to_string(index) + "/" + std::to_string(total) + "] " + c.technique + " " +
+           osgGlyphs::getShapeName(c.shape) + " n=" + std::to_string(c.n) + ": ";
+}
+
+void printProgress(const BenchResult& result, std::size_t index, std::size_t total)
+{
+    std::cout << getProgressPrefix(index, total, BenchCase{result.technique, result.shape, result.n})
+              << "median " << formatMs(result.msMedian) << " ms (min " << formatMs(result.msMin) << ", max "
+              << formatMs(result.msMax) << "), first frame " << formatMs(result.firstFrameMs) << " ms, "
+              << format(result.bytesPerGlyph, 1) << " B/glyph, covers " << format(100.0 * result.coverage, 1)
+              << "% of the view" << (result.coverage > 0.0 ? "" : " (WARNING: it drew nothing)") << std::endl;
+}
+
+void writeCsvRow(std::ostream& csv, const BenchResult& result, const BenchSettings& settings)
+{
+    csv << result.technique << ',' << osgGlyphs::getShapeName(result.shape) << ',' << result.n << ','
+        << settings.width << ',' << settings.height << ',' << settings.frames << ','
+        << format(result.msMedian, 4) << ',' << format(result.msMin, 4) << ',' << format(result.msMax, 4)
+        << ',' << format(result.firstFrameMs, 4) << ',' << format(result.bytesPerGlyph, 2) << ','
+        << getDataPathName(settings.dataPath) << ',' << format(result.coverage, 4) << ','
+        << format(result.radius, 7) << ',' << (settings.compressedAttributes ? "compressed" : "float") << '\n'
+        << std::flush;
+}
+
+const BenchResult* findResult(const std::vector<BenchResult>& results, std::string technique,
+                              osgGlyphs::GlyphShape shape, unsigned int n)
+{
+    for (const BenchResult& result : results)
+    {
+        if (result.technique == technique && result.shape == shape && result.n == n)
+            return &result;
+    }
+    return nullptr;
+}
+
+void printSummary(const std::vector<BenchResult>& results, const BenchSettings& settings)
+{
+    std::cout << "\nSummary: median ms per frame, and relative to points-floor and to polygons (same "
+                 "shape and n, this run)\n";
+    std::cout << std::left << std::setw(10) << "shape" << std::setw(10) << "n" << std::setw(18) << "technique"
+              << std::right << std::setw(10) << "ms" << std::setw(12) << "/floor" << std::setw(12)
+              << "/polygons"
+              << "\n";
+    for (osgGlyphs::GlyphShape shape : settings.shapes)
+    {
+        for (unsigned int n : settings.counts)
+        {
+            const BenchResult* floor = findResult(results, "points-floor", shape, n);
+            const BenchResult* polygons = findResult(results, "polygons", shape, n);
+            for (const std::string& technique : settings.techniques)
+            {
+                if (const BenchResult* result = findResult(results, technique, shape, n))
+                    printSummaryRow(*result, floor, polygons);
+            }
+        }
+    }
+    std::cout << std::flush;
+}

@@ -1,0 +1,137 @@
+#include "BenchRun.h"
+
+#include "BenchPlot.h"
+#include "BenchReport.h"
+#include "EqualCoverage.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+
+namespace
+{
+
+/** Every case to measure, by shape, then n, then technique, so that an interrupted run has
+ * every technique at the smaller n. Prints the (technique, shape) pairs skipped. */
+std::vector<BenchCase> listCases(const BenchSettings& settings)
+{
+    std::vector<BenchCase> cases;
+    for (osgGlyphs::GlyphShape shape : settings.shapes)
+    {
+        for (const std::string& technique : settings.techniques)
+        {
+            if (!osgGlyphs::createTechnique(technique)->supportsShape(shape))
+                std::cout << "[skipped] " << technique << " " << osgGlyphs::getShapeName(shape)
+                          << ": the library cannot draw it yet" << std::endl;
+        }
+        for (unsigned int n : settings.counts)
+        {
+            for (const std::string& technique : settings.techniques)
+            {
+                if (osgGlyphs::createTechnique(technique)->supportsShape(shape))
+                    cases.push_back(BenchCase{technique, shape, n});
+            }
+        }
+    }
+    return cases;
+}
+
+/** Whether an earlier n of the same technique and shape went over --max-ms. */
+bool isOverBudget(const std::vector<BenchResult>& results, const BenchCase& c, const BenchSettings& settings)
+{
+    if (settings.maxMs <= 0.0)
+        return false;
+    for (const BenchResult& result : results)
+    {
+        if (result.technique == c.technique && result.shape == c.shape && result.msMedian > settings.maxMs)
+            return true;
+    }
+    return false;
+}
+
+/** Prints the system's 1-minute load average, where /proc/loadavg has it: other processes on
+ * the machine make every time noisier. */
+void printLoad(const char* when)
+{
+    std::ifstream file("/proc/loadavg");
+    std::string load;
+    if (file >> load)
+        std::cout << "Load average " << when << ": " << load << std::endl;
+}
+
+/** Sets MESA_SHADER_CACHE_DISABLE=true unless the user set it; says which. */
+void disableShaderCache()
+{
+    const bool userSet = std::getenv("MESA_SHADER_CACHE_DISABLE") != nullptr;
+    if (!userSet)
+        setenv("MESA_SHADER_CACHE_DISABLE", "true", 0);
+    std::cout << "MESA_SHADER_CACHE_DISABLE=" << std::getenv("MESA_SHADER_CACHE_DISABLE")
+              << (userSet ? " (set by the user)" : "") << std::endl;
+}
+
+/** Opens --csv, if given, and writes its header; false when it cannot be written. */
+bool openCsv(const BenchSettings& settings, std::ofstream& csv)
+{
+    if (settings.csvFile.empty())
+        return true;
+    csv.open(settings.csvFile);
+    if (!csv)
+    {
+        std::cerr << PROGRAM << ": error: cannot write " << settings.csvFile << std::endl;
+        return false;
+    }
+    csv << CSV_HEADER << '\n' << std::flush;
+    return true;
+}
+
+/** Measures the cases in turn, skipping those over --max-ms; false without a headless context. */
+bool measureCases(const std::vector<BenchCase>& cases, const BenchSettings& settings, std::ofstream& csv,
+                  std::vector<BenchResult>& results, std::string& renderer)
+{
+    CaseRadii radii;
+    for (size_t i = 0; i < cases.size(); ++i)
+    {
+        const BenchCase& c = cases[i];
+        if (isOverBudget(results, c, settings))
+        {
+            std::cout << getProgressPrefix(i + 1, cases.size(), c) << "skipped (over --max-ms)" << std::endl;
+            continue;
+        }
+        BenchResult result;
+        const float radius = getCaseRadius(c, settings, radii);
+        if (radius <= 0.0f || !measureCase(c, radius, settings, result, renderer))
+        {
+            std::cerr << PROGRAM << ": error: no headless GL context" << std::endl;
+            return false;
+        }
+        printProgress(result, i + 1, cases.size());
+        if (csv.is_open())
+            writeCsvRow(csv, result, settings);
+        results.push_back(result);
+    }
+    return true;
+}
+
+}
+
+int runBenchmark(const BenchSettings& settings)
+{
+    std::ofstream csv;
+    if (!openCsv(settings, csv))
+        return 1;
+    disableShaderCache();
+    printLoad("at the start");
+    printFrameOverhead(settings);
+    const std::vector<BenchCase> cases = listCases(settings);
+    std::vector<BenchResult> results;
+    std::string renderer;
+    if (!measureCases(cases, settings, csv, results, renderer))
+        return 1;
+    printLoad("at the end");
+    printSummary(results, settings);
+    if (csv.is_open())
+        std::cout << PROGRAM << ": wrote " << settings.csvFile << std::endl;
+    if (!settings.plotFile.empty() && !writePlot(results, settings, renderer))
+        return 1;
+    return 0;
+}
