@@ -16,7 +16,7 @@ namespace
 
 bool parseDataPath(const std::string& name, DataPath& path)
 {
-    for (DataPath candidate : {DataPath::VBO, DataPath::ClientArrays})
+    for (DataPath candidate : {DataPath::VBO, DataPath::ClientArrays, DataPath::DisplayList})
     {
         if (name == getDataPathName(candidate))
         {
@@ -115,12 +115,7 @@ bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
         return false;
     if (arguments.read("--data-path", text) && !parseDataPath(text, settings.dataPath))
     {
-        if (text == "display-list")
-            arguments.reportError(
-                "--data-path display-list: glyph clouds set per-cloud uniforms while drawing, "
-                "which a display list does not replay (see GlyphCloud); use vbo or client-arrays");
-        else
-            arguments.reportError("--data-path: unknown value '" + text + "' (vbo, client-arrays)");
+        arguments.reportError("--data-path: unknown value '" + text + "' (vbo, client-arrays, display-list)");
         return false;
     }
     if (arguments.read("--attributes", text))
@@ -165,6 +160,8 @@ const char* getDataPathName(DataPath path)
     {
     case DataPath::ClientArrays:
         return "client-arrays";
+    case DataPath::DisplayList:
+        return "display-list";
     default:
         return "vbo";
     }
@@ -193,9 +190,10 @@ void describeBenchOptions(osg::ApplicationUsage& usage)
                                "frame of each, scaling the radius by the square root of the coverage "
                                "ratio), so that shapes are compared at the same fragment load.");
     usage.addCommandLineOption("--seed <s>", "Seed of the random clouds (default 1).");
-    usage.addCommandLineOption("--data-path <vbo|client-arrays>",
-                               "How vertex data reaches the GPU (paper section 3; default vbo). "
-                               "display-list is refused: glyph clouds cannot be drawn from display lists.");
+    usage.addCommandLineOption("--data-path <vbo|client-arrays|display-list>",
+                               "How vertex data reaches the GPU (paper section 3; default vbo). The "
+                               "instanced techniques are skipped with display-list: GL compiles no "
+                               "instanced draw into a display list.");
     usage.addCommandLineOption("--attributes <compressed|float>",
                                "A glyph's radius and scalar as a half float and 16 bits in one word "
                                "(default), or as two floats (paper section 3; GlyphCloud::"

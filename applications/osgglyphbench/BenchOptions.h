@@ -19,10 +19,11 @@ extern const char* const PROGRAM;
 enum class DataPath
 {
     VBO,
-    ClientArrays
+    ClientArrays,
+    DisplayList
 };
 
-/** "vbo" or "client-arrays", as --data-path and the CSV spell it. */
+/** "vbo", "client-arrays" or "display-list", as --data-path and the CSV spell it. */
 const char* getDataPathName(DataPath path);
 
 /** Everything the command line sets. */

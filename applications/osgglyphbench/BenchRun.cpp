@@ -11,6 +11,18 @@
 namespace
 {
 
+/** Why a technique cannot be measured for a shape on the data path, or nothing. */
+std::string whyNotMeasured(const std::string& name, osgGlyphs::GlyphShape shape,
+                           const BenchSettings& settings)
+{
+    const osg::ref_ptr<osgGlyphs::GlyphTechnique> technique = osgGlyphs::createTechnique(name);
+    if (!technique->supportsShape(shape))
+        return "the library cannot draw it yet";
+    if (settings.dataPath == DataPath::DisplayList && !technique->supportsDisplayLists())
+        return "GL compiles no instanced draw into a display list";
+    return std::string();
+}
+
 /** Every case to measure, by shape, then n, then technique, so that an interrupted run has
  * every technique at the smaller n. Prints the (technique, shape) pairs skipped. */
 std::vector<BenchCase> listCases(const BenchSettings& settings)
@@ -18,20 +30,19 @@ std::vector<BenchCase> listCases(const BenchSettings& settings)
     std::vector<BenchCase> cases;
     for (osgGlyphs::GlyphShape shape : settings.shapes)
     {
+        std::vector<std::string> measured;
         for (const std::string& technique : settings.techniques)
         {
-            if (!osgGlyphs::createTechnique(technique)->supportsShape(shape))
-                std::cout << "[skipped] " << technique << " " << osgGlyphs::getShapeName(shape)
-                          << ": the library cannot draw it yet" << std::endl;
+            const std::string why = whyNotMeasured(technique, shape, settings);
+            if (why.empty())
+                measured.push_back(technique);
+            else
+                std::cout << "[skipped] " << technique << " " << osgGlyphs::getShapeName(shape) << ": " << why
+                          << std::endl;
         }
         for (unsigned int n : settings.counts)
-        {
-            for (const std::string& technique : settings.techniques)
-            {
-                if (osgGlyphs::createTechnique(technique)->supportsShape(shape))
-                    cases.push_back(BenchCase{technique, shape, n});
-            }
-        }
+            for (const std::string& technique : measured)
+                cases.push_back(BenchCase{technique, shape, n});
     }
     return cases;
 }

@@ -5,6 +5,7 @@
 
 #include <osgGlyphs/GlyphCloud>
 #include <osgGlyphs/GlyphStateCache>
+#include <osgGlyphs/ImpostorTechniques>
 
 #include <osg/MatrixTransform>
 #include <osg/Sequence>
@@ -414,15 +415,15 @@ TEST_F(GlyphCloudData, TheOptimizerLeavesCloudsAndTheirTransformsAlone)
     EXPECT_NE(dynamic_cast<osg::MatrixTransform*>(scaledCloud->getParent(0)), nullptr);
 }
 
-TEST_F(GlyphCloudData, DisplayListsAreRefusedBecauseTheyWouldNotReplayTheUniforms)
+TEST_F(GlyphCloudData, DisplayListsAreOfferedWhereTheTechniqueDrawsWithoutInstancing)
 {
-    // Measured on Mesa: a uniform applied inside a compiled display list does not reach the draw.
     osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{osg::Vec3(), 1.0f, osg::Vec4ub(255, 0, 0, 255)}});
-    osg::ref_ptr<NotifyCapture> capture = new NotifyCapture;
-    cloud->setUseDisplayList(true);
-    capture->stop();
+    EXPECT_TRUE(cloud->getSupportsDisplayList());
+    EXPECT_FALSE(cloud->getUseDisplayList()); // vertex buffer objects by default
+    cloud->setTechnique(new osgGlyphs::InstancedTechnique);
     EXPECT_FALSE(cloud->getSupportsDisplayList());
-    EXPECT_FALSE(cloud->getUseDisplayList());
     osg::ref_ptr<GlyphCloud> copy = new GlyphCloud(*cloud);
     EXPECT_FALSE(copy->getSupportsDisplayList());
+    cloud->setTechnique(nullptr);
+    EXPECT_TRUE(cloud->getSupportsDisplayList());
 }

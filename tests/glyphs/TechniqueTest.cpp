@@ -153,6 +153,30 @@ TEST_P(Techniques, PointsFloorDrawsOnePixelPerGlyph)
     EXPECT_LE(covered, 9);
 }
 
+TEST_P(Techniques, DisplayListsDrawWhatBufferObjectsDraw)
+{
+    for (const std::string& name : osgGlyphs::getTechniqueNames())
+    {
+        osg::ref_ptr<GlyphCloud> buffers = createScene(GetParam()), lists = createScene(GetParam());
+        for (GlyphCloud* cloud : {buffers.get(), lists.get()})
+            cloud->setTechnique(osgGlyphs::createTechnique(name).get());
+        // GL compiles no instanced draw into a display list: those techniques refuse them and
+        // draw from client arrays.
+        const bool supported = lists->getEffectiveTechnique()->supportsDisplayLists();
+        EXPECT_EQ(lists->getSupportsDisplayList(), supported) << name;
+        lists->setUseVertexBufferObjects(false);
+        if (supported)
+            lists->setUseDisplayList(true);
+        const Frame fromBuffers = renderer.render(group({buffers.get()}).get());
+        const Comparison comparison =
+            compare(renderer.render(group({lists.get()}).get()), fromBuffers, 0, 0.0f);
+        EXPECT_GT(comparison.coveredBoth, 0) << name;
+        EXPECT_EQ(comparison.coveredBoth, comparison.coveredEither) << name;
+        EXPECT_EQ(comparison.differingColor, 0) << name;
+        EXPECT_EQ(comparison.differingDepth, 0) << name;
+    }
+}
+
 TEST(TechniqueNames, EveryRegisteredNameCreatesItsTechnique)
 {
     const std::vector<std::string> names = osgGlyphs::getTechniqueNames();

@@ -43,8 +43,8 @@ GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
 
 void GlyphCloud::initialize()
 {
-    // The cloud's arrays are packed for the GPU; OSG compiles no display list of them.
-    setSupportsDisplayList(false);
+    // Vertex buffer objects by default; display lists where the technique allows them.
+    setUseDisplayList(false);
     setUseVertexBufferObjects(true);
     if (!_technique)
         _technique = createTechnique(DEFAULT_GLYPH_TECHNIQUE);
@@ -275,6 +275,7 @@ void GlyphCloud::buildPrimitives()
     if (builtFor == _builtFor && !technique->copiesArrays())
         return; // the same arrays, drawn the same way: changed contents upload by themselves
     _builtFor = builtFor;
+    setSupportsDisplayList(technique->supportsDisplayLists());
     dirtyGLObjects();
     getVertexAttribArrayList().clear();
     setVertexArray(nullptr);

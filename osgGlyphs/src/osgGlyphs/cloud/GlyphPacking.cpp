@@ -31,15 +31,6 @@ bool isFinite(const osg::Vec3& v)
     return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
 }
 
-/** Sets or clears reason in flags; true if flags changed. */
-bool setReason(uint8_t& flags, SkipReason reason, bool applies)
-{
-    const uint8_t updated = applies ? (flags | reason) : (flags & ~reason);
-    const bool changed = updated != flags;
-    flags = updated;
-    return changed;
-}
-
 }
 
 bool GlyphCloud::PackedSource::changedFrom(const osg::Array* current) const
@@ -129,31 +120,37 @@ void GlyphCloud::updateGlyphs(bool report)
 std::vector<unsigned int> GlyphCloud::updateSkipped(bool positions, bool radii, bool scalars, bool vectors)
 {
     std::vector<unsigned int> flipped;
-    for (unsigned int i = 0; i < _numGlyphs; ++i)
+    // Sets or clears one reason for every glyph; notes the glyphs that became drawn or skipped.
+    auto update = [&](uint8_t reason, auto applies)
     {
-        uint8_t& flags = _skipped[i];
-        const bool wasSkipped = flags != 0;
-        if (positions)
-            setReason(flags, SKIP_POSITION, !isFinite((*_positions)[i]));
-        if (radii && _radii.valid())
-            setReason(flags, SKIP_RADIUS, !(std::isfinite((*_radii)[i]) && (*_radii)[i] > 0.0f));
-        else if (radii)
-            setReason(flags, SKIP_RADIUS, false);
-        if (scalars)
-            setReason(flags, SKIP_SCALAR, _scalars.valid() && !std::isfinite((*_scalars)[i]));
-        if (vectors)
+        for (unsigned int i = 0; i < _numGlyphs; ++i)
         {
-            const bool vector = hasVectorShape();
-            setReason(flags, SKIP_VECTOR, vector && !isFinite((*_vectors)[i]));
-            setReason(flags, SKIP_ZERO_VECTOR,
-                      vector && isFinite((*_vectors)[i]) && (*_vectors)[i].length2() == 0.0f);
+            uint8_t& flags = _skipped[i];
+            const uint8_t updated = applies(i) ? uint8_t(flags | reason) : uint8_t(flags & ~reason);
+            if ((updated == 0) != (flags == 0))
+                flipped.push_back(i);
+            flags = updated;
         }
-        if ((flags != 0) != wasSkipped)
-            flipped.push_back(i);
+    };
+    if (positions)
+        update(SKIP_POSITION, [&](unsigned int i) { return !isFinite((*_positions)[i]); });
+    if (radii && _radii.valid())
+        update(SKIP_RADIUS,
+               [&](unsigned int i) { return !(std::isfinite((*_radii)[i]) && (*_radii)[i] > 0.0f); });
+    else if (radii)
+        update(SKIP_RADIUS, [](unsigned int) { return false; });
+    if (scalars)
+        update(SKIP_SCALAR,
+               [&](unsigned int i) { return _scalars.valid() && !std::isfinite((*_scalars)[i]); });
+    if (vectors && hasVectorShape())
+    {
+        update(SKIP_VECTOR, [&](unsigned int i) { return !isFinite((*_vectors)[i]); });
+        update(SKIP_ZERO_VECTOR, [&](unsigned int i) { return (*_vectors)[i].length2() == 0.0f; });
     }
-    _numSkipped = 0;
-    for (uint8_t flags : _skipped)
-        _numSkipped += flags != 0 ? 1 : 0;
+    else if (vectors)
+        update(SKIP_VECTOR | SKIP_ZERO_VECTOR, [](unsigned int) { return false; });
+    _numSkipped =
+        static_cast<unsigned int>(_numGlyphs - std::count(_skipped.begin(), _skipped.end(), uint8_t(0)));
     return flipped;
 }
 
@@ -213,7 +210,7 @@ bool GlyphCloud::updateQuantisationRange()
 
 void GlyphCloud::packRadius(unsigned int i)
 {
-    const bool radiusValid = std::isfinite(_radiusScale) && _radiusScale > 0.0f;
+    const bool radiusValid = _radiusScale > 0.0f && _radiusScale <= std::numeric_limits<float>::max();
     const float relative = _radii.valid() ? (*_radii)[i] / _radiusScale : 1.0f;
     const bool drawn = radiusValid && _skipped[i] == 0;
     const uint16_t half = !drawn ? 0 : _radii.valid() ? detail::toHalf(relative) : HALF_ONE;
@@ -263,9 +260,10 @@ void GlyphCloud::packScalars()
 void GlyphCloud::reportSkipped() const
 {
     unsigned int counts[5] = {0, 0, 0, 0, 0};
-    for (uint8_t flags : _skipped)
-        for (int bit = 0; bit < 5; ++bit)
-            counts[bit] += (flags >> bit) & 1u;
+    if (_numSkipped > 0)
+        for (uint8_t flags : _skipped)
+            for (int bit = 0; flags != 0 && bit < 5; ++bit)
+                counts[bit] += (flags >> bit) & 1u;
     const bool radiusValid = std::isfinite(_radiusScale) && _radiusScale > 0.0f;
     auto report = [&](unsigned int bad, const char* problem)
     {
