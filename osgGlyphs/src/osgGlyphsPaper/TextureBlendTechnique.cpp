@@ -2,16 +2,10 @@
 
 #include "SpriteTextures.h"
 
-#include <osg/PointSprite>
 #include <osg/Uniform>
 
 using namespace osgGlyphs;
 using namespace osgGlyphsPaper;
-
-bool TextureBlendTechnique::supportsShape(GlyphShape shape) const
-{
-    return shape == GlyphShape::Sphere; // the paper's textures are of spheres
-}
 
 std::vector<GlyphShaderFile> TextureBlendTechnique::getShaderFiles() const
 {
@@ -19,9 +13,9 @@ std::vector<GlyphShaderFile> TextureBlendTechnique::getShaderFiles() const
             {osg::Shader::FRAGMENT, "osgGlyphsPaper/texture-blend.frag"}};
 }
 
-void TextureBlendTechnique::configureStateSet(osg::StateSet& stateSet, const GlyphVariant&) const
+void TextureBlendTechnique::configureStateSet(osg::StateSet& stateSet, const GlyphVariant& variant) const
 {
-    detail::setSpriteModes(stateSet);
+    SpriteTechnique::configureStateSet(stateSet, variant);
     stateSet.setTextureAttribute(MASK_TEXTURE_UNIT, detail::createSpriteTexture(false));
     stateSet.setTextureAttribute(LIGHTING_TEXTURE_UNIT, detail::createSpriteTexture(true));
     stateSet.addUniform(new osg::Uniform("osgGlyphs_maskTexture", static_cast<int>(MASK_TEXTURE_UNIT)));

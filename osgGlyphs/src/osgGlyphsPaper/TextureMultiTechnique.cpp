@@ -7,11 +7,6 @@
 using namespace osgGlyphs;
 using namespace osgGlyphsPaper;
 
-bool TextureMultiTechnique::supportsShape(GlyphShape shape) const
-{
-    return shape == GlyphShape::Sphere; // the paper's textures are of spheres
-}
-
 std::vector<GlyphShaderFile> TextureMultiTechnique::getShaderFiles() const
 {
     return {{osg::Shader::VERTEX, "osgGlyphsPaper/texture-multi.vert"},
@@ -20,7 +15,7 @@ std::vector<GlyphShaderFile> TextureMultiTechnique::getShaderFiles() const
 
 void TextureMultiTechnique::configureStateSet(osg::StateSet& stateSet, const GlyphVariant& variant) const
 {
-    detail::setSpriteModes(stateSet);
+    SpriteTechnique::configureStateSet(stateSet, variant);
     stateSet.setTextureAttribute(
         LIT_SPRITES_TEXTURE_UNIT,
         detail::createLitSprites(variant.colorMode, variant.colorMap.get(), variant.color));
