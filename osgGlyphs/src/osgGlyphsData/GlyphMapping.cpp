@@ -400,8 +400,8 @@ void GlyphMapper::buildCategoryKey(const PointData& data)
 
 osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::string& error) const
 {
-    std::vector<osg::Vec3f> positions;
-    if (!getPositions(data, _options.positionColumns, positions, error))
+    osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
+    if (!getPositions(data, _options.positionColumns, positions->asVector(), error))
     {
         error = data.getSource() + ": " + error;
         return nullptr;
@@ -409,61 +409,74 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
     cloud->setName(data.getSource() + " timestep " + std::to_string(data.getTimestep()));
     applyGlyphStyle(*cloud, _options);
-    cloud->setPositions(new osg::Vec3Array(positions.begin(), positions.end()));
-    const std::size_t n = positions.size();
+    cloud->setPositions(positions.get());
+    if (!setRadii(*cloud, data, error) || !setVectors(*cloud, data, error) || !setColors(*cloud, data, error))
+        return nullptr;
+    return cloud;
+}
 
-    if (!_radiusColumn.empty() || _elementRadii)
+bool GlyphMapper::setRadii(GlyphCloud& cloud, const PointData& data, std::string& error) const
+{
+    if (_radiusColumn.empty() && !_elementRadii)
     {
-        const std::vector<float>* column = data.getColumn(_elementRadii ? "element" : _radiusColumn);
-        if (!column)
-        {
-            error = missingColumn(option("radius-by"), _radiusColumn, data);
-            return nullptr;
-        }
-        osg::ref_ptr<osg::FloatArray> radii = new osg::FloatArray(n);
-        for (std::size_t i = 0; i < n; ++i)
-            (*radii)[i] = _elementRadii ? elementOf((*column)[i]).covalentRadius : (*column)[i] * _radius;
-        cloud->setRadii(radii.get());
+        cloud.setRadius(_radius);
+        return true;
     }
-    else
-        cloud->setRadius(_radius);
+    const std::vector<float>* column = data.getColumn(_elementRadii ? "element" : _radiusColumn);
+    if (!column)
+    {
+        error = missingColumn(option("radius-by"), _radiusColumn, data);
+        return false;
+    }
+    osg::ref_ptr<osg::FloatArray> radii = new osg::FloatArray(cloud.getPositions()->size());
+    for (std::size_t i = 0; i < radii->size(); ++i)
+        (*radii)[i] = _elementRadii ? elementOf((*column)[i]).covalentRadius : (*column)[i] * _radius;
+    cloud.setRadii(radii.get());
+    return true;
+}
 
+bool GlyphMapper::setVectors(GlyphCloud& cloud, const PointData& data, std::string& error) const
+{
+    if (_options.shape == GlyphShape::Sphere)
+        return true;
     const std::vector<float>* v[3];
-    if (_options.shape != GlyphShape::Sphere)
+    if (!getTriple(data, _vectorColumns, v))
     {
-        if (!getTriple(data, _vectorColumns, v))
-        {
-            error = missingColumn(option("vector"), joinColumns(_vectorColumns), data);
-            return nullptr;
-        }
-        osg::ref_ptr<osg::Vec3Array> vectors = new osg::Vec3Array(n);
-        for (std::size_t i = 0; i < n; ++i)
-            (*vectors)[i].set((*v[0])[i], (*v[1])[i], (*v[2])[i]);
-        cloud->setVectors(vectors.get());
-        cloud->setLengthScale(_lengthScale);
+        error = missingColumn(option("vector"), joinColumns(_vectorColumns), data);
+        return false;
     }
+    osg::ref_ptr<osg::Vec3Array> vectors = new osg::Vec3Array(cloud.getPositions()->size());
+    for (std::size_t i = 0; i < vectors->size(); ++i)
+        (*vectors)[i].set((*v[0])[i], (*v[1])[i], (*v[2])[i]);
+    cloud.setVectors(vectors.get());
+    cloud.setLengthScale(_lengthScale);
+    return true;
+}
 
+bool GlyphMapper::setColors(GlyphCloud& cloud, const PointData& data, std::string& error) const
+{
+    const std::size_t n = cloud.getPositions()->size();
     if (_colorSource == ColorSource::Column || _colorSource == ColorSource::Speed)
     {
         osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray;
         if (!computeScalars(data, scalars->asVector(), error))
-            return nullptr;
-        cloud->setScalars(scalars.get());
-        cloud->setScalarRange(_key.min, _key.max);
+            return false;
+        cloud.setScalarRange(_key.min, _key.max); // before the scalars: they are packed once, for it
+        cloud.setScalars(scalars.get());
+        return true;
     }
-    else if (_colorSource == ColorSource::Element || _colorSource == ColorSource::Category)
+    osg::ref_ptr<osg::Vec4ubArray> colors = new osg::Vec4ubArray(n);
+    if (_colorSource == ColorSource::Element || _colorSource == ColorSource::Category)
     {
         const std::string name = _colorSource == ColorSource::Element ? "element" : _colorColumn;
         const std::vector<float>* column = data.getColumn(name);
         if (!column)
         {
             error = data.getSource() + ": no column '" + name + "' to colour by; " + listColumns(data);
-            return nullptr;
+            return false;
         }
-        osg::ref_ptr<osg::Vec4ubArray> colors = new osg::Vec4ubArray(n);
         for (std::size_t i = 0; i < n; ++i)
             (*colors)[i] = toVec4ub(getCategoryColor((*column)[i]));
-        cloud->setColors(colors.get());
     }
     else if (_colorSource == ColorSource::RGB)
     {
@@ -471,17 +484,19 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
         if (!getTriple(data, RGB_COLUMNS, rgb))
         {
             error = data.getSource() + ": no red, green, blue columns; " + listColumns(data);
-            return nullptr;
+            return false;
         }
-        osg::ref_ptr<osg::Vec4ubArray> colors = new osg::Vec4ubArray(n);
         for (std::size_t i = 0; i < n; ++i)
             (*colors)[i] = toVec4ub(osg::Vec4((*rgb[0])[i] * _rgbScale, (*rgb[1])[i] * _rgbScale,
                                               (*rgb[2])[i] * _rgbScale, 1.0f));
-        cloud->setColors(colors.get());
     }
     else
-        cloud->setColor(UNIFORM_COLOR);
-    return cloud;
+    {
+        cloud.setColor(UNIFORM_COLOR);
+        return true;
+    }
+    cloud.setColors(colors.get());
+    return true;
 }
 
 std::string GlyphMapper::describe() const
