@@ -80,7 +80,8 @@ osg::ref_ptr<osg::Group> createScene(osgGlyphs::GlyphCloud* cloud, int numCopies
     return root;
 }
 
-/** Frames the scene's bounding sphere; near and far are left to OSG (computed every cull). */
+/** Frames the scene's bounding sphere; near and far are left to OSG, which computes them in every
+ * cull and writes them into the camera's projection. */
 void setUpCamera(osg::Camera& camera, const ViewSpec& spec, const osg::BoundingSphere& bound)
 {
     const double aspect = static_cast<double>(spec.width) / spec.height;
@@ -92,6 +93,7 @@ void setUpCamera(osg::Camera& camera, const ViewSpec& spec, const osg::BoundingS
     camera.setViewMatrixAsLookAt(osg::Vec3d(bound.center()) + direction * distance, bound.center(),
                                  osg::Vec3d(0.0, 0.0, 1.0));
     camera.setClearColor(osg::Vec4(0.1f, 0.1f, 0.15f, 1.0f));
+    camera.setComputeNearFarMode(osg::CullSettings::COMPUTE_NEAR_FAR_USING_BOUNDING_VOLUMES);
 }
 
 /** Frames of a view rendered alone. OSG computes near and far in every cull from the camera's
@@ -146,22 +148,14 @@ bool sameFrames(const Frame& a, const Frame& b)
 /** The view rendered alone in a single-threaded viewer, until a frame equals the one two before. */
 Reference renderAlone(osg::Node* scene, const ViewSpec& spec)
 {
-    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer =
-        new osgGlyphsHeadless::OffscreenViewer(spec.width, spec.height);
-    setUpCamera(*viewer->getCamera(), spec, scene->getBound());
-    viewer->setSceneData(scene);
+    Renderer renderer(spec.width, spec.height);
+    setUpCamera(*renderer.getViewer()->getCamera(), spec, scene->getBound());
     Reference frames;
     while (frames.size() < 3 || !sameFrames(frames[frames.size() - 3], frames.back()))
     {
         if (frames.size() == MAX_REFERENCE_FRAMES)
             return Reference();
-        viewer->frame();
-        Frame frame;
-        frame.color = new osg::Image(*viewer->getColorImage(), osg::CopyOp::DEEP_COPY_ALL);
-        frame.depth = new osg::Image(*viewer->getDepthImage(), osg::CopyOp::DEEP_COPY_ALL);
-        frame.view = viewer->getFrameCapture()->getViewMatrix();
-        frame.projection = viewer->getFrameCapture()->getProjectionMatrix();
-        frames.push_back(frame);
+        frames.push_back(renderer.render(scene));
     }
     return frames;
 }
