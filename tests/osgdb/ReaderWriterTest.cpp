@@ -6,6 +6,7 @@
 
 #include <osgGlyphs/GlyphCloud>
 #include <osgGlyphsData/GlyphMapping>
+#include <osgGlyphsData/PointReader>
 
 #include <osg/Sequence>
 #include <osgDB/ReadFile>
@@ -176,6 +177,17 @@ TEST(GlyphsPlugin, StreamsAreReadInTheFormatTheOptionsName)
     result = plugin->readNode(broken, withOptions("format=csv").get());
     EXPECT_EQ(result.status(), ReadResult::ERROR_IN_READING_FILE);
     EXPECT_NE(result.message().find("osgdb_glyphs: stream:2: "), std::string::npos) << result.message();
+}
+
+TEST(GlyphsPlugin, TakesEveryExtensionOfThePointFormats)
+{
+    osgDB::ReaderWriter* plugin = osgDB::Registry::instance()->getReaderWriterForExtension("glyphs");
+    ASSERT_NE(plugin, nullptr);
+    for (const osgGlyphsData::PointFormat& format : osgGlyphsData::getPointFormats())
+    {
+        for (const std::string& extension : format.extensions)
+            EXPECT_TRUE(plugin->acceptsExtension(extension)) << extension;
+    }
 }
 
 TEST(GlyphsPlugin, ForeignExtensionsAreNotHandled)

@@ -25,6 +25,22 @@ TEST(PointReader, TellsFormatsFromExtensions)
     EXPECT_EQ(formatFromExtension("README"), "");
 }
 
+TEST(PointReader, DescribesEachFormatAndTheFileNamesThatSelectIt)
+{
+    const std::vector<PointFormat>& formats = getPointFormats();
+    ASSERT_EQ(formats.size(), getSupportedPointFormats().size());
+    for (const PointFormat& format : formats)
+    {
+        EXPECT_FALSE(format.description.empty()) << format.name;
+        ASSERT_FALSE(format.extensions.empty()) << format.name;
+        for (const std::string& extension : format.extensions)
+            EXPECT_EQ(formatFromExtension("file." + extension), format.name) << extension;
+        for (const std::string& prefix : format.prefixes)
+            EXPECT_EQ(formatFromExtension(prefix + "file"), format.name) << prefix;
+    }
+    EXPECT_EQ(formats[2].prefixes, std::vector<std::string>{"dump."});
+}
+
 TEST(PointReader, RejectsUnknownFormatNames)
 {
     std::string error;

@@ -1,6 +1,7 @@
 #include <osgGlyphsData/GlyphMapping>
 
 #include "NeighbourDistance.h"
+#include "PointColumns.h"
 
 #include <osgGlyphsData/Elements>
 
@@ -17,6 +18,7 @@
 
 using namespace osgGlyphs;
 using namespace osgGlyphsData;
+using namespace osgGlyphsData::detail;
 
 namespace
 {
@@ -36,7 +38,7 @@ const osg::Vec4 UNIFORM_COLOR(0.35f, 0.55f, 0.80f, 1.0f);
 const std::size_t MAX_KEY_CATEGORIES = 12;
 
 /** Velocity columns tried, in order, when --vector is not given. */
-const char* const VECTOR_CANDIDATES[][3] = {
+const std::vector<std::vector<std::string>> VECTOR_CANDIDATES = {
     {"vx", "vy", "vz"}, {"velo_x", "velo_y", "velo_z"}, {"velocity_x", "velocity_y", "velocity_z"}};
 
 /** Colour columns, as PLY files name them. */
@@ -59,14 +61,6 @@ std::string formatNumber(float value)
     return text;
 }
 
-std::string listColumns(const PointData& data)
-{
-    std::string list = "available columns:";
-    for (const std::string& name : data.getColumnNames())
-        list += " " + name;
-    return data.getNumColumns() == 0 ? "the data has no columns" : list;
-}
-
 std::string missingColumn(const std::string& option, const std::string& column, const PointData& data)
 {
     return option + ": no column '" + column + "' in " + data.getSource() + "; " + listColumns(data);
@@ -84,19 +78,6 @@ const Element& elementOf(float value)
     if (!std::isfinite(value) || value < 0.0f || value > 1000.0f)
         return getUnknownElement();
     return getElement(static_cast<unsigned int>(std::lround(value)));
-}
-
-/** The three columns of a triple, or false when one is missing. */
-bool getTriple(const PointData& data, const std::vector<std::string>& names,
-               const std::vector<float>* columns[3])
-{
-    for (int axis = 0; axis < 3; ++axis)
-    {
-        columns[axis] = names.size() == 3 ? data.getColumn(names[axis]) : nullptr;
-        if (!columns[axis])
-            return false;
-    }
-    return true;
 }
 
 }
@@ -166,15 +147,12 @@ bool GlyphMapper::resolveVectors(const PointData& data, bool required, std::stri
         _vectorColumns = _options.vectorColumns;
         return true;
     }
-    for (const auto& candidate : VECTOR_CANDIDATES)
+    const std::vector<float>* columns[3];
+    const int found = findColumnTriple(data, VECTOR_CANDIDATES, columns);
+    if (found >= 0)
     {
-        const std::vector<std::string> names(candidate, candidate + 3);
-        const std::vector<float>* columns[3];
-        if (getTriple(data, names, columns))
-        {
-            _vectorColumns = names;
-            return true;
-        }
+        _vectorColumns = VECTOR_CANDIDATES[found];
+        return true;
     }
     if (required)
     {
@@ -212,7 +190,7 @@ bool GlyphMapper::resolveColor(const PointData& data, std::string& error)
     }
     else if (data.hasColumn("element"))
         _colorSource = ColorSource::Element;
-    else if (getTriple(data, RGB_COLUMNS, rgb))
+    else if (getColumnTriple(data, RGB_COLUMNS, rgb))
     {
         _colorSource = ColorSource::RGB;
         float largest = 0.0f;
@@ -247,7 +225,7 @@ bool GlyphMapper::computeScalars(const PointData& data, std::vector<float>& scal
         return true;
     }
     const std::vector<float>* v[3];
-    if (!getTriple(data, _vectorColumns, v))
+    if (!getColumnTriple(data, _vectorColumns, v))
     {
         error = data.getSource() + ": speed needs the columns " + joinColumns(_vectorColumns) + "; " +
                 listColumns(data);
@@ -338,7 +316,7 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
 
     _lengthScale = _options.lengthScale > 0.0f ? _options.lengthScale : 1.0f;
     const std::vector<float>* v[3];
-    if (vectorShape && _options.lengthScale <= 0.0f && getTriple(data, _vectorColumns, v))
+    if (vectorShape && _options.lengthScale <= 0.0f && getColumnTriple(data, _vectorColumns, v))
     {
         double sum = 0.0;
         std::size_t count = 0;
@@ -440,7 +418,7 @@ bool GlyphMapper::setVectors(GlyphCloud& cloud, const PointData& data, std::stri
     if (_options.shape == GlyphShape::Sphere)
         return true;
     const std::vector<float>* v[3];
-    if (!getTriple(data, _vectorColumns, v))
+    if (!getColumnTriple(data, _vectorColumns, v))
     {
         error = missingColumn(option("vector"), joinColumns(_vectorColumns), data);
         return false;
@@ -481,7 +459,7 @@ bool GlyphMapper::setColors(GlyphCloud& cloud, const PointData& data, std::strin
     else if (_colorSource == ColorSource::RGB)
     {
         const std::vector<float>* rgb[3];
-        if (!getTriple(data, RGB_COLUMNS, rgb))
+        if (!getColumnTriple(data, RGB_COLUMNS, rgb))
         {
             error = data.getSource() + ": no red, green, blue columns; " + listColumns(data);
             return false;

@@ -1,8 +1,11 @@
 #include <osgGlyphsData/PointData>
 
+#include "PointColumns.h"
+
 #include <utility>
 
 using namespace osgGlyphsData;
+using namespace osgGlyphsData::detail;
 
 PointData::PointData(std::size_t numPoints)
     : _numPoints(numPoints), _tilt(0.0, 0.0, 0.0), _hasBox(false), _timestep(0)
@@ -112,38 +115,6 @@ PointDataset::PointDataset() {}
 
 PointDataset::~PointDataset() {}
 
-namespace
-{
-
-std::string listColumns(const PointData& data)
-{
-    if (data.getNumColumns() == 0)
-        return "the frame has no columns";
-    std::string list = "available columns:";
-    for (const std::string& name : data.getColumnNames())
-        list += " " + name;
-    return list;
-}
-
-// The three columns of the first complete triple in candidates, or none.
-bool findTriple(const PointData& data, const char* const candidates[][3], std::size_t count,
-                const std::vector<float>* triple[3], bool& scaled)
-{
-    for (std::size_t c = 0; c < count; ++c)
-    {
-        for (int axis = 0; axis < 3; ++axis)
-            triple[axis] = data.getColumn(candidates[c][axis]);
-        if (triple[0] && triple[1] && triple[2])
-        {
-            scaled = c >= 2;
-            return true;
-        }
-    }
-    return false;
-}
-
-} // namespace
-
 bool osgGlyphsData::getPositions(const PointData& data, const std::vector<std::string>& columns,
                                  std::vector<osg::Vec3f>& out, std::string& error)
 {
@@ -151,13 +122,16 @@ bool osgGlyphsData::getPositions(const PointData& data, const std::vector<std::s
     bool scaled = false;
     if (columns.empty())
     {
-        static const char* const candidates[][3] = {
+        // Cartesian, unwrapped, then box-scaled (LAMMPS' names).
+        static const std::vector<std::vector<std::string>> candidates = {
             {"x", "y", "z"}, {"xu", "yu", "zu"}, {"xs", "ys", "zs"}, {"xsu", "ysu", "zsu"}};
-        if (!findTriple(data, candidates, 4, triple, scaled))
+        const int found = findColumnTriple(data, candidates, triple);
+        if (found < 0)
         {
             error = "no position columns (x y z, xu yu zu, xs ys zs or xsu ysu zsu); " + listColumns(data);
             return false;
         }
+        scaled = found >= 2;
         if (scaled && !data.hasBox())
         {
             error = "scaled coordinates need a simulation box, and the frame has none";

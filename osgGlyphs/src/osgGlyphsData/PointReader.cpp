@@ -1,8 +1,9 @@
 #include <osgGlyphsData/PointReader>
 
+#include "PointFormatTable.h"
 #include "readers/Fields.h"
-#include "readers/Readers.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -17,42 +18,37 @@ using namespace osgGlyphsData::readers;
 namespace
 {
 
-struct Format
+std::vector<std::string> splitWords(const char* text)
 {
-    const char* name;
-    void (*read)(TextScanner&, PointDataset&);
-};
+    std::vector<std::string_view> fields;
+    splitBlanks(text, fields);
+    return std::vector<std::string>(fields.begin(), fields.end());
+}
 
-const Format formats[] = {
-    {"csv", readCsv}, {"xyz", readXyz}, {"lammps", readLammps}, {"ply", readPly}, {"vtk", readVtk},
-};
-
-// Format names and the aliases readPointStream() also takes.
-const struct
+bool hasExtension(const PointFormat& format, const std::string& extension)
 {
-    const char* alias;
-    const char* format;
-} aliases[] = {
-    {"csv", "csv"},          {"xyz", "xyz"},     {"extxyz", "xyz"}, {"lammps", "lammps"},
-    {"lammpstrj", "lammps"}, {"dump", "lammps"}, {"ply", "ply"},    {"vtk", "vtk"},
-};
+    return std::find(format.extensions.begin(), format.extensions.end(), extension) !=
+           format.extensions.end();
+}
 
-std::string canonicalFormat(const std::string& name)
+/** The row of a format name or of one of its extensions, or nullptr. */
+const detail::PointFormatRow* findFormat(const std::string& name)
 {
     const std::string lower = toLower(name);
-    for (const auto& alias : aliases)
+    const std::vector<PointFormat>& formats = getPointFormats(); // in the order of the rows
+    for (std::size_t i = 0; i < formats.size(); ++i)
     {
-        if (lower == alias.alias)
-            return alias.format;
+        if (lower == formats[i].name || hasExtension(formats[i], lower))
+            return &detail::POINT_FORMAT_ROWS[i];
     }
-    return std::string();
+    return nullptr;
 }
 
 std::string formatList()
 {
     std::string list;
-    for (const Format& format : formats)
-        list += (list.empty() ? "" : ", ") + std::string(format.name);
+    for (const std::string& name : getSupportedPointFormats())
+        list += (list.empty() ? "" : ", ") + name;
     return list;
 }
 
@@ -76,10 +72,22 @@ uint64_t remainingStreamSize(std::istream& stream)
 
 } // namespace
 
+const std::vector<PointFormat>& osgGlyphsData::getPointFormats()
+{
+    static const std::vector<PointFormat> formats = []
+    {
+        std::vector<PointFormat> list;
+        for (const detail::PointFormatRow& row : detail::POINT_FORMAT_ROWS)
+            list.push_back({row.name, row.description, splitWords(row.extensions), splitWords(row.prefixes)});
+        return list;
+    }();
+    return formats;
+}
+
 std::vector<std::string> osgGlyphsData::getSupportedPointFormats()
 {
     std::vector<std::string> names;
-    for (const Format& format : formats)
+    for (const PointFormat& format : getPointFormats())
         names.push_back(format.name);
     return names;
 }
@@ -88,20 +96,22 @@ std::string osgGlyphsData::formatFromExtension(const std::string& path)
 {
     const std::filesystem::path file(path);
     const std::string filename = toLower(file.filename().string());
-    if (startsWith(filename, "dump."))
-        return "lammps";
     std::string extension = toLower(file.extension().string());
-    if (extension.empty())
-        return std::string();
-    extension.erase(0, 1);
-    if (extension == "csv")
-        return "csv";
-    if (extension == "xyz" || extension == "extxyz")
-        return "xyz";
-    if (extension == "lammpstrj" || extension == "dump" || extension == "lammps")
-        return "lammps";
-    if (extension == "ply" || extension == "vtk")
-        return extension;
+    if (!extension.empty())
+        extension.erase(0, 1);
+    for (const PointFormat& format : getPointFormats())
+    {
+        for (const std::string& prefix : format.prefixes)
+        {
+            if (startsWith(filename, prefix))
+                return format.name;
+        }
+    }
+    for (const PointFormat& format : getPointFormats())
+    {
+        if (hasExtension(format, extension))
+            return format.name;
+    }
     return std::string();
 }
 
@@ -110,13 +120,7 @@ osg::ref_ptr<PointDataset> osgGlyphsData::readPointStream(std::istream& stream, 
                                                           const PointReadOptions& options, std::string& error)
 {
     error.clear();
-    const std::string canonical = canonicalFormat(format);
-    const Format* reader = nullptr;
-    for (const Format& candidate : formats)
-    {
-        if (canonical == candidate.name)
-            reader = &candidate;
-    }
+    const detail::PointFormatRow* reader = findFormat(format);
     if (!reader)
     {
         error = nameForMessages + ": unknown point format " + quote(format) + " (supported: " + formatList() +

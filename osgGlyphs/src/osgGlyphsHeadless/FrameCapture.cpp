@@ -34,10 +34,11 @@ void FrameCapture::operator()(osg::RenderInfo& renderInfo) const
         _glRenderer = text(GL_RENDERER);
     }
 
-    // The camera's own matrices: OSG writes its computed near and far back into the projection,
-    // and the state's projection may belong to a HUD camera drawn after the scene.
-    _projection = camera->getProjectionMatrix();
-    _view = camera->getViewMatrix();
+    // The matrices this draw used, from its state: in a threaded viewer the cull of the next frame
+    // writes the camera's own (the computed near and far) while this frame draws.
+    const osg::State& state = *renderInfo.getState();
+    _projection = state.getProjectionMatrix();
+    _view = state.getInitialViewMatrix();
 
     const int x = static_cast<int>(viewport->x()), y = static_cast<int>(viewport->y());
     const int width = static_cast<int>(viewport->width()), height = static_cast<int>(viewport->height());

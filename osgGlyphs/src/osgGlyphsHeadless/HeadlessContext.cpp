@@ -29,6 +29,17 @@ ExtensionLookup osgExtensionLookup()
     return next;
 }
 
+/** Every backend and its name, for getHeadlessBackendName() and parseHeadlessBackend(). */
+const struct
+{
+    HeadlessBackend backend;
+    const char* name;
+} BACKEND_NAMES[] = {
+    {HeadlessBackend::Default, "default"},
+    {HeadlessBackend::OSMesa, "osmesa"},
+    {HeadlessBackend::EGL, "egl"},
+};
+
 std::string objectDefining(void* address)
 {
     Dl_info info{};
@@ -73,15 +84,12 @@ void* osg::getGLExtensionFuncPtr(const char* funcName)
 
 const char* osgGlyphsHeadless::getHeadlessBackendName(HeadlessBackend backend)
 {
-    switch (backend)
+    for (const auto& entry : BACKEND_NAMES)
     {
-    case HeadlessBackend::OSMesa:
-        return "osmesa";
-    case HeadlessBackend::EGL:
-        return "egl";
-    default:
-        return "default";
+        if (entry.backend == backend)
+            return entry.name;
     }
+    return "default";
 }
 
 bool osgGlyphsHeadless::parseHeadlessBackend(const std::string& name, HeadlessBackend& backend)
@@ -89,12 +97,11 @@ bool osgGlyphsHeadless::parseHeadlessBackend(const std::string& name, HeadlessBa
     std::string lower(name);
     std::transform(lower.begin(), lower.end(), lower.begin(),
                    [](unsigned char c) { return std::tolower(c); });
-    for (HeadlessBackend candidate :
-         {HeadlessBackend::Default, HeadlessBackend::OSMesa, HeadlessBackend::EGL})
+    for (const auto& entry : BACKEND_NAMES)
     {
-        if (lower == getHeadlessBackendName(candidate))
+        if (lower == entry.name)
         {
-            backend = candidate;
+            backend = entry.backend;
             return true;
         }
     }

@@ -120,15 +120,14 @@ public:
     {
         osgGlyphsPaper::registerTechniques(); // the technique option offers the paper's too
         supportsExtension(PSEUDO_EXTENSION, "Pseudo-loader: <file>.glyphs reads <file> as glyphs");
-        supportsExtension("lammpstrj", "LAMMPS text dump");
-        supportsExtension("lammps", "LAMMPS text dump");
-        supportsExtension("dump", "LAMMPS text dump");
-        supportsExtension("xyz", "XYZ / extended XYZ");
-        supportsExtension("extxyz", "Extended XYZ");
-        supportsExtension("csv", "Comma-separated point columns");
-        supportsExtension("ply", "PLY vertices as glyphs");
-        supportsExtension("vtk", "Legacy VTK points as glyphs");
-        supportsOption("format=<name>", "Read as csv, xyz, lammps, ply or vtk, whatever the extension");
+        std::string formats;
+        for (const osgGlyphsData::PointFormat& format : osgGlyphsData::getPointFormats())
+        {
+            for (const std::string& extension : format.extensions)
+                supportsExtension(extension, format.description);
+            formats += (formats.empty() ? "" : ", ") + format.name;
+        }
+        supportsOption("format=<name>", "Read as " + formats + ", whatever the extension");
         supportsOption("frame=<n>|all",
                        "One frame of a multi-frame file, or all of them in a loop (default)");
         supportsOption("glyph=<shape>", "sphere (default), cone, arrow or cylinder");
