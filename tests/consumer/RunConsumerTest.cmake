@@ -48,7 +48,7 @@ run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 
 run(${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${WORK_DIR}/cmake-build" -DCMAKE_PREFIX_PATH=${prefix}
     "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" -DCMAKE_CXX_COMPILER=${CXX})
-run(${CMAKE_COMMAND} --build "${WORK_DIR}/cmake-build")
+run(${CMAKE_COMMAND} --build "${WORK_DIR}/cmake-build" --target consumer)
 run_consumer("${WORK_DIR}/cmake-build/consumer" consumer-cmake.png)
 
 file(GLOB pc_dirs "${prefix}/lib*/pkgconfig" "${prefix}/lib/*/pkgconfig")

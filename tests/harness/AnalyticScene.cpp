@@ -8,7 +8,7 @@
 #include <variant>
 
 // The truth is ray-cast in double precision with the math of the shaders it checks
-// (shaders/osgGlyphs/sphere.glsl and vector.glsl), in GLM's GLSL-like types; osg types at the
+// (shaders/osgGlyphs/sphere.glsl, vector.glsl and lighting.glsl), in GLM's GLSL-like types; osg types at the
 // boundary of the class only.
 
 namespace
@@ -147,6 +147,20 @@ void hitSide(dvec3 o, dvec3 d, double z0, double r0, double z1, double r1, doubl
     }
 }
 
+// lighting.glsl, lit
+
+dvec3 shade(dvec3 base, dvec3 position, dvec3 normal, dvec3 toEye, dvec4 light, dvec3 lightAmbient,
+            dvec3 lightDiffuse, dvec3 lightSpecular, dvec3 material)
+{
+    dvec3 toLight = light.w == 0.0 ? normalize(dvec3(light)) : normalize(dvec3(light) - position);
+    double diffuse = std::max(dot(normal, toLight), 0.0);
+    double specular = 0.0;
+    if (diffuse > 0.0)
+        specular = std::pow(std::max(dot(normal, normalize(toLight + toEye)), 0.0), material.z);
+    dvec3 ambient = dvec3(material.x) + lightAmbient;
+    return base * (ambient + diffuse * lightDiffuse) + material.y * specular * lightSpecular;
+}
+
 // Each solid: whether the ray meets it at tMin or beyond and nearer than nearest, which it updates.
 
 bool hitSolid(const Sphere& solid, dvec3 origin, dvec3 direction, double tMin, Hit& nearest)
@@ -233,6 +247,14 @@ bool hitSolid(const Plane& solid, dvec3 origin, dvec3 direction, double tMin, Hi
 
 namespace osgGlyphsTest
 {
+
+osg::Vec3d shadeLikeGlyphs(const osg::Vec3d& base, const osg::Vec3d& position, const osg::Vec3d& normal,
+                           const osg::Vec3d& toEye, const EyeLight& light, const osg::Vec3d& material)
+{
+    const dvec4 lightPosition(light.position.x(), light.position.y(), light.position.z(), light.position.w());
+    return toOsg(shade(toGlm(base), toGlm(position), toGlm(normal), toGlm(toEye), lightPosition,
+                       toGlm(light.ambient), toGlm(light.diffuse), toGlm(light.specular), toGlm(material)));
+}
 
 struct AnalyticScene::Primitive
 {

@@ -24,6 +24,20 @@ struct RayHit
     bool hit() const { return label >= 0; }
 };
 
+/** OSG's light 0 as the glyph shaders read it (gl_LightSource[0]): its position in eye space
+ * (w = 0: the direction towards the light) and its colours. */
+struct EyeLight
+{
+    osg::Vec4d position;
+    osg::Vec3d ambient, diffuse, specular;
+};
+
+/** The lit colour of shaders/osgGlyphs/lighting.glsl, unclamped: a base colour at an eye-space
+ * point with a unit normal and the unit direction to the eye, under the light, with a
+ * GlyphCloud's material (ambient, specular strength, shininess). */
+osg::Vec3d shadeLikeGlyphs(const osg::Vec3d& base, const osg::Vec3d& position, const osg::Vec3d& normal,
+                           const osg::Vec3d& toEye, const EyeLight& light, const osg::Vec3d& material);
+
 class AnalyticScene
 {
 public:

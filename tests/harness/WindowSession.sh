@@ -1,6 +1,7 @@
 # Sourced by the tests that drive a real window under Xvfb with xdotool.
 #   window_session_begin <work dir> <tools...>   skips (exit 77) without Xvfb, xdotool or a tool,
 #                                                 starts a display of its own, cd's into work dir
+#   display_session_begin <work dir> <tools...>  the same for programs that need no input: no xdotool
 #   launch <command...>                           starts the program (output in viewer.log)
 #   close_with_escape                             presses Escape, fails unless the program exits 0
 #   fail <message>                                prints the message and the program's output
@@ -22,9 +23,16 @@ window_session_end()
 
 window_session_begin()
 {
+    local work=$1
+    shift
+    display_session_begin "$work" xdotool "$@"
+}
+
+display_session_begin()
+{
     local work=$1 tool
     shift
-    for tool in Xvfb xdotool "$@"; do
+    for tool in Xvfb "$@"; do
         if ! command -v "$tool" >/dev/null; then
             echo "SKIP: $tool is not installed"
             exit 77
