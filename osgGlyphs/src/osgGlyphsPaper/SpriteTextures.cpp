@@ -143,11 +143,11 @@ LitSpriteArray::LitSpriteArray(const std::vector<osg::Vec4>& palette)
 }
 
 LitSpriteArray::LitSpriteArray(const ColorMap* colorMap, unsigned int levels)
-    : _colorMap(colorMap), _levels(levels)
+    : _colorMap(colorMap), _levels(levels), _colorMapModifiedCount(NOT_LOADED)
 {
+    // Filled when first applied: a variant that is made but never drawn costs no filling.
     setSpriteSampling(*this);
     allocateLayers(levels);
-    fillFromColorMap();
 }
 
 LitSpriteArray::LitSpriteArray(const LitSpriteArray& other, const osg::CopyOp& copyop)

@@ -36,7 +36,7 @@ public:
     LitSpriteArray();
     /** One layer per colour of a palette. */
     explicit LitSpriteArray(const std::vector<osg::Vec4>& palette);
-    /** levels layers, of the map's colours at 0, 1 / (levels - 1), ..., 1. */
+    /** levels layers, of the map's colours at 0, 1 / (levels - 1), ..., 1, filled when first applied. */
     LitSpriteArray(const osgGlyphs::ColorMap* colorMap, unsigned int levels);
     LitSpriteArray(const LitSpriteArray& other, const osg::CopyOp& copyop = osg::CopyOp::SHALLOW_COPY);
     META_StateAttribute(osgGlyphsPaper, LitSpriteArray, TEXTURE);

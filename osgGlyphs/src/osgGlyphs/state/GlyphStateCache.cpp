@@ -101,18 +101,16 @@ osg::ref_ptr<osg::StateSet> GlyphStateCache::getStateSet(const GlyphTechnique& t
                   variant.color);
 
     std::lock_guard<std::mutex> lock(_mutex);
-    osg::ref_ptr<osg::StateSet>& stateSet = _stateSets[key];
-    if (!stateSet)
+    osg::observer_ptr<osg::StateSet>& entry = _stateSets[key];
+    osg::ref_ptr<osg::StateSet> stateSet;
+    if (entry.lock(stateSet))
+        return stateSet;
+    stateSet = createStateSet(technique, variant);
+    entry = stateSet;
+    if (_stateSets.size() >= _pruneAt)
     {
-        stateSet = createStateSet(technique, variant);
-        if (_stateSets.size() >= _pruneAt)
-        {
-            osg::ref_ptr<osg::StateSet> keep = stateSet;
-            for (auto entry = _stateSets.begin(); entry != _stateSets.end();)
-                entry = entry->second->referenceCount() == 1 ? _stateSets.erase(entry) : std::next(entry);
-            _pruneAt = std::max<std::size_t>(64, 2 * _stateSets.size());
-            return keep;
-        }
+        pruneLocked();
+        _pruneAt = std::max<std::size_t>(64, 2 * _stateSets.size());
     }
     return stateSet;
 }
@@ -137,14 +135,22 @@ osg::ref_ptr<osg::StateSet> GlyphStateCache::createStateSet(const GlyphTechnique
 unsigned int GlyphStateCache::getNumStateSets() const
 {
     std::lock_guard<std::mutex> lock(_mutex);
-    return static_cast<unsigned int>(_stateSets.size());
+    unsigned int alive = 0;
+    for (const auto& entry : _stateSets)
+        alive += entry.second.valid() ? 1 : 0;
+    return alive;
 }
 
 void GlyphStateCache::prune()
 {
     std::lock_guard<std::mutex> lock(_mutex);
+    pruneLocked();
+}
+
+void GlyphStateCache::pruneLocked()
+{
     for (auto entry = _stateSets.begin(); entry != _stateSets.end();)
-        entry = entry->second->referenceCount() == 1 ? _stateSets.erase(entry) : std::next(entry);
+        entry = entry->second.valid() ? std::next(entry) : _stateSets.erase(entry);
 }
 
 void GlyphStateCache::reloadShaders()
@@ -173,7 +179,11 @@ void GlyphStateCache::releaseGLObjects(osg::State* state) const
     for (const auto& entry : _programs)
         entry.second->releaseGLObjects(state);
     for (const auto& entry : _stateSets)
-        entry.second->releaseGLObjects(state);
+    {
+        osg::ref_ptr<osg::StateSet> stateSet;
+        if (entry.second.lock(stateSet))
+            stateSet->releaseGLObjects(state);
+    }
 }
 
 void GlyphStateCache::resizeGLObjectBuffers(unsigned int maxSize)
@@ -182,5 +192,9 @@ void GlyphStateCache::resizeGLObjectBuffers(unsigned int maxSize)
     for (auto& entry : _programs)
         entry.second->resizeGLObjectBuffers(maxSize);
     for (auto& entry : _stateSets)
-        entry.second->resizeGLObjectBuffers(maxSize);
+    {
+        osg::ref_ptr<osg::StateSet> stateSet;
+        if (entry.second.lock(stateSet))
+            stateSet->resizeGLObjectBuffers(maxSize);
+    }
 }
