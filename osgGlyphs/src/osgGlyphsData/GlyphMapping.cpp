@@ -568,76 +568,114 @@ bool resolveColorMap(const std::string& name, osg::ref_ptr<ColorMap>& colorMap, 
 }
 
 /** Sets the option; false with error saying what the value should be (without the option's name). */
+/** Sets one option from its text; error says what is wrong with the value. */
+using OptionSetter = void (*)(GlyphMappingOptions& options, const std::string& name, const std::string& value,
+                              std::string& error);
+
+void setColumns(GlyphMappingOptions& options, const std::string& name, const std::string& value,
+                std::string& error)
+{
+    std::vector<std::string>& columns = name == "position" ? options.positionColumns : options.vectorColumns;
+    if (!splitList(value, 3, columns))
+        error = "'" + value + "': give 3 column names separated by commas";
+}
+
+void setPositiveNumber(GlyphMappingOptions& options, const std::string& name, const std::string& value,
+                       std::string& error)
+{
+    float& number = name == "radius" ? options.radius : options.lengthScale;
+    if (!parseNumber(value, number) || !(number > 0.0f))
+        error = "'" + value + "': must be a positive number";
+}
+
+void setColumn(GlyphMappingOptions& options, const std::string& name, const std::string& value,
+               std::string& error)
+{
+    (name == "radius-by" ? options.radiusColumn : options.colorBy) = value;
+    if (value.empty())
+        error = "needs a column name";
+}
+
+void setColorMap(GlyphMappingOptions& options, const std::string&, const std::string& value,
+                 std::string& error)
+{
+    resolveColorMap(value, options.colorMap, error);
+}
+
+void setRange(GlyphMappingOptions& options, const std::string&, const std::string& value, std::string& error)
+{
+    std::vector<std::string> bounds;
+    options.hasRange = splitList(value, 2, bounds) && parseNumber(bounds[0], options.rangeMin) &&
+                       parseNumber(bounds[1], options.rangeMax);
+    if (!options.hasRange)
+        error = "'" + value + "': give the minimum and the maximum";
+    else if (!(options.rangeMin < options.rangeMax))
+        error = "'" + value + "': the minimum must be less than the maximum";
+}
+
+void setShape(GlyphMappingOptions& options, const std::string&, const std::string& value, std::string& error)
+{
+    if (!parseShape(value, options.shape))
+        error = "'" + value + "': unknown shape (sphere, cone, arrow, cylinder)";
+}
+
+void setTechnique(GlyphMappingOptions& options, const std::string&, const std::string& value,
+                  std::string& error)
+{
+    if (createTechnique(value).valid())
+        options.technique = value;
+    else
+        error =
+            "'" + value + "': unknown technique (default, " + joinColumns(getTechniqueNames(), ", ") + ")";
+}
+
+void setLit(GlyphMappingOptions& options, const std::string&, const std::string& value, std::string& error)
+{
+    if (!parseSwitch(value, options.lit))
+        error = "'" + value + "': on or off";
+}
+
+void setUnlit(GlyphMappingOptions& options, const std::string&, const std::string& value, std::string& error)
+{
+    options.lit = false;
+    if (!value.empty())
+        error = "takes no value";
+}
+
+/** Every option, in the order the help lists them. */
+const std::pair<const char*, OptionSetter> OPTIONS[] = {
+    {"position", setColumns},  {"vector", setColumns},      {"radius", setPositiveNumber},
+    {"radius-by", setColumn},  {"color-by", setColumn},     {"color", setColumn},
+    {"colormap", setColorMap}, {"range", setRange},         {"length-scale", setPositiveNumber},
+    {"glyph", setShape},       {"technique", setTechnique}, {"lit", setLit},
+    {"unlit", setUnlit}};
+
 bool setOption(GlyphMappingOptions& options, const std::string& name, const std::string& value,
                std::string& error)
 {
-    if (name == "position" || name == "vector")
+    for (const auto& option : OPTIONS)
     {
-        std::vector<std::string>& columns =
-            name == "position" ? options.positionColumns : options.vectorColumns;
-        if (!splitList(value, 3, columns))
-            error = "'" + value + "': give 3 column names separated by commas";
+        if (name == option.first)
+        {
+            option.second(options, name, value, error);
+            return error.empty();
+        }
     }
-    else if (name == "radius" || name == "length-scale")
-    {
-        float& number = name == "radius" ? options.radius : options.lengthScale;
-        if (!parseNumber(value, number) || !(number > 0.0f))
-            error = "'" + value + "': must be a positive number";
-    }
-    else if (name == "radius-by" || name == "color-by" || name == "color")
-    {
-        (name == "radius-by" ? options.radiusColumn : options.colorBy) = value;
-        if (value.empty())
-            error = "needs a column name";
-    }
-    else if (name == "colormap")
-        resolveColorMap(value, options.colorMap, error);
-    else if (name == "range")
-    {
-        std::vector<std::string> bounds;
-        options.hasRange = splitList(value, 2, bounds) && parseNumber(bounds[0], options.rangeMin) &&
-                           parseNumber(bounds[1], options.rangeMax);
-        if (!options.hasRange)
-            error = "'" + value + "': give the minimum and the maximum";
-        else if (!(options.rangeMin < options.rangeMax))
-            error = "'" + value + "': the minimum must be less than the maximum";
-    }
-    else if (name == "glyph")
-    {
-        if (!parseShape(value, options.shape))
-            error = "'" + value + "': unknown shape (sphere, cone, arrow, cylinder)";
-    }
-    else if (name == "technique")
-    {
-        if (createTechnique(value).valid())
-            options.technique = value;
-        else
-            error = "'" + value + "': unknown technique (default, " + joinColumns(getTechniqueNames(), ", ") +
-                    ")";
-    }
-    else if (name == "lit")
-    {
-        if (!parseSwitch(value, options.lit))
-            error = "'" + value + "': on or off";
-    }
-    else if (name == "unlit")
-    {
-        options.lit = false;
-        if (!value.empty())
-            error = "takes no value";
-    }
-    else
-        error = "unknown option (" + joinColumns(getGlyphMappingOptionNames(), ", ") + ")";
-    return error.empty();
+    error = "unknown option (" + joinColumns(getGlyphMappingOptionNames(), ", ") + ")";
+    return false;
 }
 
 }
 
 const std::vector<std::string>& osgGlyphsData::getGlyphMappingOptionNames()
 {
-    static const std::vector<std::string> names = {
-        "position", "vector",       "radius", "radius-by", "color-by", "color", "colormap",
-        "range",    "length-scale", "glyph",  "technique", "lit",      "unlit"};
+    static const std::vector<std::string> names = []
+    {
+        std::vector<std::string> all;
+        for (const auto& option : OPTIONS)
+            all.push_back(option.first);
+        return all;
+    }();
     return names;
 }
 
