@@ -306,7 +306,14 @@ void GlyphCloud::accept(osg::NodeVisitor& nv)
         osg::Geometry::accept(nv);
         return;
     }
-    GlyphStateCache::observeContext(cv->getState()->getContextID());
+    // Once per cull traversal on each thread: the context registry takes a lock.
+    thread_local std::pair<const osgUtil::CullVisitor*, unsigned int> observed;
+    const std::pair<const osgUtil::CullVisitor*, unsigned int> traversal(cv, cv->getTraversalNumber());
+    if (observed != traversal)
+    {
+        GlyphStateCache::observeContext(cv->getState()->getContextID());
+        observed = traversal;
+    }
     cv->pushStateSet(_variantStateSet.get());
     cv->pushStateSet(detail::getViewStateSet(*cv));
     cv->pushStateSet(_cloudStateSet.get());
