@@ -227,13 +227,9 @@ void expect(bool ok, const std::string& what)
 
 }
 
-int main(int argc, char** argv)
+/** A window of WIDTH x HEIGHT on the display, or nullptr. */
+osg::ref_ptr<osg::GraphicsContext> openWindow()
 {
-    if (!std::getenv("DISPLAY"))
-    {
-        std::cout << "windowed_consumer: SKIP: no DISPLAY" << std::endl;
-        return 77;
-    }
     osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
     traits->readDISPLAY();
     traits->setUndefinedScreenDetailsToDefaultScreen();
@@ -249,22 +245,102 @@ int main(int argc, char** argv)
     if (!window || !window->valid())
     {
         std::cerr << "windowed_consumer: FAILED: no window on " << traits->displayName() << std::endl;
-        return 1;
+        return nullptr;
     }
+    return window;
+}
 
+/** Looks at the scene through the window; the final draw reads the frame back. */
+void setUpCamera(osg::Camera& camera, osg::GraphicsContext* window, ReadBack* readBack)
+{
+    camera.setGraphicsContext(window);
+    camera.setViewport(0, 0, WIDTH, HEIGHT);
+    camera.setDrawBuffer(GL_BACK);
+    camera.setReadBuffer(GL_BACK);
+    camera.setClearColor(CLEAR_COLOR);
+    camera.setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+    camera.setProjectionMatrixAsPerspective(30.0, double(WIDTH) / HEIGHT, NEAR_PLANE, FAR_PLANE);
+    camera.setViewMatrixAsLookAt(EYE, osg::Vec3d(), osg::Vec3d(0.0, 0.0, 1.0));
+    camera.setFinalDrawCallback(readBack);
+}
+
+/** What the certain pixels of a frame show. */
+struct Tally
+{
+    std::vector<int> shown = std::vector<int>(NUM_SPHERES, 0);
+    int background = 0, box = 0, boxHidesSphere = 0, sphereHidesBox = 0, wrongColor = 0, wrongDepth = 0;
+};
+
+/** Every pixel whose surface is certain (not on a silhouette, nor on the curve where a sphere
+ * enters the box) must show that surface's colour, and a sphere or the box its analytic depth. */
+Tally checkPixels(const Frame& frame)
+{
+    Tally tally;
+    for (int y = 0; y < HEIGHT; ++y)
+    {
+        for (int x = 0; x < WIDTH; ++x)
+        {
+            const Hit hit = frame.cast(x + 0.5, y + 0.5);
+            if (!frame.isCertain(x, y, hit))
+                continue;
+            if (hit.surface >= 0)
+                ++tally.shown[hit.surface];
+            tally.background += hit.surface == BACKGROUND ? 1 : 0;
+            tally.box += hit.surface == BOX ? 1 : 0;
+            tally.boxHidesSphere += hit.hidesSphere ? 1 : 0;
+            tally.sphereHidesBox += hit.hidesBox ? 1 : 0;
+            const bool colorOk = colorsNear(frame.colorAt(x, y), expectedColor(hit.surface));
+            const double expected = hit.surface == BACKGROUND ? 1.0 : frame.windowDepth(hit.point);
+            const bool depthOk = std::fabs(frame.depthAt(x, y) - expected) <= DEPTH_TOLERANCE;
+            if ((!colorOk || !depthOk) && tally.wrongColor + tally.wrongDepth < 10)
+            {
+                const osg::Vec4ub c = frame.colorAt(x, y);
+                std::cout << "  pixel (" << x << ", " << y << ") shows " << int(c.r()) << " " << int(c.g())
+                          << " " << int(c.b()) << " at depth " << frame.depthAt(x, y) << ", expected surface "
+                          << hit.surface << " at depth " << expected << std::endl;
+            }
+            tally.wrongColor += colorOk ? 0 : 1;
+            tally.wrongDepth += depthOk ? 0 : 1;
+        }
+    }
+    return tally;
+}
+
+void expectTally(const Tally& tally)
+{
+    for (int i = 0; i < NUM_SPHERES; ++i)
+        expect(tally.shown[i] > 300, "sphere " + std::to_string(i) + " shows on " +
+                                         std::to_string(tally.shown[i]) + " certain pixels (more than 300)");
+    expect(tally.box > 5000,
+           "the box shows on " + std::to_string(tally.box) + " certain pixels (more than 5000)");
+    expect(tally.background > 5000, "the background shows on " + std::to_string(tally.background) +
+                                        " certain pixels (more than 5000)");
+    expect(tally.boxHidesSphere > 200, "the box hides a sphere on " + std::to_string(tally.boxHidesSphere) +
+                                           " certain pixels (more than 200)");
+    expect(tally.sphereHidesBox > 200, "a sphere hides the box on " + std::to_string(tally.sphereHidesBox) +
+                                           " certain pixels (more than 200)");
+    expect(tally.wrongColor == 0, std::to_string(tally.wrongColor) +
+                                      " certain pixels differ from their surface's colour by more than " +
+                                      std::to_string(COLOR_TOLERANCE) + " levels");
+    expect(tally.wrongDepth == 0, std::to_string(tally.wrongDepth) +
+                                      " certain pixels differ from the analytic depth by more than " +
+                                      std::to_string(DEPTH_TOLERANCE));
+}
+
+int main(int argc, char** argv)
+{
+    if (!std::getenv("DISPLAY"))
+    {
+        std::cout << "windowed_consumer: SKIP: no DISPLAY" << std::endl;
+        return 77;
+    }
+    osg::ref_ptr<osg::GraphicsContext> window = openWindow();
+    if (!window)
+        return 1;
     osgViewer::Viewer viewer;
     viewer.setThreadingModel(osgViewer::Viewer::SingleThreaded);
-    osg::Camera* camera = viewer.getCamera();
-    camera->setGraphicsContext(window.get());
-    camera->setViewport(0, 0, WIDTH, HEIGHT);
-    camera->setDrawBuffer(GL_BACK);
-    camera->setReadBuffer(GL_BACK);
-    camera->setClearColor(CLEAR_COLOR);
-    camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
-    camera->setProjectionMatrixAsPerspective(30.0, double(WIDTH) / HEIGHT, NEAR_PLANE, FAR_PLANE);
-    camera->setViewMatrixAsLookAt(EYE, osg::Vec3d(), osg::Vec3d(0.0, 0.0, 1.0));
     osg::ref_ptr<ReadBack> readBack = new ReadBack;
-    camera->setFinalDrawCallback(readBack.get());
+    setUpCamera(*viewer.getCamera(), window.get(), readBack.get());
     viewer.setSceneData(createScene().get());
     viewer.realize();
     if (!viewer.isRealized())
@@ -280,58 +356,11 @@ int main(int argc, char** argv)
         return 1;
     }
     std::cout << "osgGlyphs " << osgGlyphsGetVersion() << " windowed consumer: " << WIDTH << "x" << HEIGHT
-              << " window on " << traits->displayName() << ", " << readBack->renderer << std::endl;
+              << " window on " << window->getTraits()->displayName() << ", " << readBack->renderer
+              << std::endl;
     if (argc > 1)
         osgDB::writeImageFile(*readBack->color, argv[1]);
-
-    // Every pixel whose surface is certain (not on a silhouette, nor on the curve where a sphere
-    // enters the box) shows that surface's colour, and a sphere or the box its analytic depth.
-    const Frame frame(*readBack, *camera);
-    std::vector<int> shown(NUM_SPHERES, 0);
-    int background = 0, box = 0, boxHidesSphere = 0, sphereHidesBox = 0, wrongColor = 0, wrongDepth = 0;
-    for (int y = 0; y < HEIGHT; ++y)
-    {
-        for (int x = 0; x < WIDTH; ++x)
-        {
-            const Hit hit = frame.cast(x + 0.5, y + 0.5);
-            if (!frame.isCertain(x, y, hit))
-                continue;
-            if (hit.surface >= 0)
-                ++shown[hit.surface];
-            background += hit.surface == BACKGROUND ? 1 : 0;
-            box += hit.surface == BOX ? 1 : 0;
-            boxHidesSphere += hit.hidesSphere ? 1 : 0;
-            sphereHidesBox += hit.hidesBox ? 1 : 0;
-            const bool colorOk = colorsNear(frame.colorAt(x, y), expectedColor(hit.surface));
-            const double expected = hit.surface == BACKGROUND ? 1.0 : frame.windowDepth(hit.point);
-            const bool depthOk = std::fabs(frame.depthAt(x, y) - expected) <= DEPTH_TOLERANCE;
-            if ((!colorOk || !depthOk) && wrongColor + wrongDepth < 10)
-            {
-                const osg::Vec4ub c = frame.colorAt(x, y);
-                std::cout << "  pixel (" << x << ", " << y << ") shows " << int(c.r()) << " " << int(c.g())
-                          << " " << int(c.b()) << " at depth " << frame.depthAt(x, y) << ", expected surface "
-                          << hit.surface << " at depth " << expected << std::endl;
-            }
-            wrongColor += colorOk ? 0 : 1;
-            wrongDepth += depthOk ? 0 : 1;
-        }
-    }
-    for (int i = 0; i < NUM_SPHERES; ++i)
-        expect(shown[i] > 300, "sphere " + std::to_string(i) + " shows on " + std::to_string(shown[i]) +
-                                   " certain pixels (more than 300)");
-    expect(box > 5000, "the box shows on " + std::to_string(box) + " certain pixels (more than 5000)");
-    expect(background > 5000,
-           "the background shows on " + std::to_string(background) + " certain pixels (more than 5000)");
-    expect(boxHidesSphere > 200,
-           "the box hides a sphere on " + std::to_string(boxHidesSphere) + " certain pixels (more than 200)");
-    expect(sphereHidesBox > 200,
-           "a sphere hides the box on " + std::to_string(sphereHidesBox) + " certain pixels (more than 200)");
-    expect(wrongColor == 0, std::to_string(wrongColor) +
-                                " certain pixels differ from their surface's colour by more than " +
-                                std::to_string(COLOR_TOLERANCE) + " levels");
-    expect(wrongDepth == 0, std::to_string(wrongDepth) +
-                                " certain pixels differ from the analytic depth by more than " +
-                                std::to_string(DEPTH_TOLERANCE));
+    expectTally(checkPixels(Frame(*readBack, *viewer.getCamera())));
     if (failures > 0)
     {
         std::cerr << "windowed_consumer: FAILED: " << failures << " checks" << std::endl;
