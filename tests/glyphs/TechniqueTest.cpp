@@ -142,6 +142,28 @@ TEST_P(Techniques, SpriteTechniquesCoverRoughlyTheGlyphs)
     }
 }
 
+TEST_P(Techniques, ANewColourRangeReachesEveryTechnique)
+{
+    // A narrower range re-quantises the scalars; techniques that copy the packed words into
+    // their primitives (paper-quad) must copy them again.
+    for (const std::string& name : osgGlyphs::getTechniqueNames())
+    {
+        osg::ref_ptr<GlyphCloud> changed = createScene(GetParam()), fresh = createScene(GetParam());
+        changed->setTechnique(osgGlyphs::createTechnique(name).get());
+        const Frame first = renderer.render(group({changed.get()}).get());
+        changed->setScalarRange(2.0f, 5.0f);
+        fresh->setScalarRange(2.0f, 5.0f);
+        fresh->setTechnique(osgGlyphs::createTechnique(name).get());
+        const Comparison comparison = compare(renderer.render(group({changed.get()}).get()),
+                                              renderer.render(group({fresh.get()}).get()), 0, 0.0f);
+        EXPECT_GT(comparison.coveredBoth, 0) << name;
+        EXPECT_EQ(comparison.differingColor, 0) << name;
+        if (name != "points-floor") // the floor draws the cloud's one colour
+            EXPECT_GT(compare(first, renderer.render(group({fresh.get()}).get()), 0, 1.0f).differingColor, 0)
+                << name << ": the range should change some colours";
+    }
+}
+
 TEST_P(Techniques, PointsFloorDrawsOnePixelPerGlyph)
 {
     const Frame frame = render("points-floor");

@@ -200,7 +200,10 @@ void GlyphCloud::setScalarRange(float min, float max)
     _rangeMin = min;
     _rangeMax = max;
     if (updateQuantisationRange() && _scalars.valid())
-        packScalars(); // the 16 bits now span another interval
+    {
+        packScalars();     // the 16 bits now span another interval
+        buildPrimitives(); // a technique may copy the packed words
+    }
     updateScalarMapping();
 }
 
@@ -210,7 +213,10 @@ void GlyphCloud::resetScalarRange()
     _rangeMin = _dataMin;
     _rangeMax = _dataMax;
     if (updateQuantisationRange() && _scalars.valid())
+    {
         packScalars();
+        buildPrimitives();
+    }
     updateScalarMapping();
 }
 
