@@ -6,6 +6,7 @@
 #include <osgGlyphsData/RandomCloud>
 #include <osgGlyphsHeadless/OffscreenViewer>
 
+#include <osg/GLExtensions>
 #include <osg/Geode>
 
 #include <algorithm>
@@ -31,6 +32,7 @@ osg::ref_ptr<osgGlyphs::GlyphCloud> createCloud(const BenchCase& c, float radius
     cloud->setCompressedAttributes(settings.compressedAttributes);
     cloud->setUseVertexBufferObjects(settings.dataPath == DataPath::VBO);
     cloud->setUseDisplayList(settings.dataPath == DataPath::DisplayList);
+    cloud->setCulling(c.culling);
     bytesPerGlyph = cloud->getGPUBytesPerGlyph();
     return cloud;
 }
@@ -77,6 +79,65 @@ double getCoverage(const osg::Image& image)
     return static_cast<double>(covered) / count;
 }
 
+#ifndef GL_FRAGMENT_SHADER_INVOCATIONS_ARB
+#define GL_FRAGMENT_SHADER_INVOCATIONS_ARB 0x82F4
+#endif
+
+/** Counts the fragments the camera's scene shades (ARB_pipeline_statistics_query): its pre-draw
+ * callback begins the query, its post-draw callback ends and reads it. */
+class FragmentCounter : public osg::Camera::DrawCallback
+{
+public:
+    explicit FragmentCounter(bool begin, FragmentCounter* beginner = nullptr)
+        : _begin(begin), _beginner(beginner)
+    {
+    }
+
+    void operator()(osg::RenderInfo& renderInfo) const override
+    {
+        FragmentCounter& counter = _begin ? const_cast<FragmentCounter&>(*this) : *_beginner;
+        const unsigned int contextID = renderInfo.getState()->getContextID();
+        osg::GLExtensions* ext = renderInfo.getState()->get<osg::GLExtensions>();
+        if (!osg::isGLExtensionSupported(contextID, "GL_ARB_pipeline_statistics_query") || !ext->glGenQueries)
+            return;
+        if (_begin)
+        {
+            if (!counter._query)
+                ext->glGenQueries(1, &counter._query);
+            ext->glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, counter._query);
+            return;
+        }
+        ext->glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+        GLuint64 fragments = 0;
+        ext->glGetQueryObjectui64v(counter._query, GL_QUERY_RESULT, &fragments);
+        counter._fragments = double(fragments);
+    }
+
+    double getFragments() const { return _fragments; }
+
+private:
+    bool _begin;
+    FragmentCounter* _beginner;
+    GLuint _query = 0;
+    double _fragments = -1.0;
+};
+
+/** Fragments shaded per pixel drawn on, in one more frame; negative where GL cannot count. */
+double measureOverdraw(osgGlyphsHeadless::OffscreenViewer& viewer, double coverage, unsigned int frame)
+{
+    osg::Camera* camera = viewer.getCamera();
+    osg::ref_ptr<FragmentCounter> begin = new FragmentCounter(true);
+    camera->setPreDrawCallback(begin.get());
+    camera->setPostDrawCallback(new FragmentCounter(false, begin.get()));
+    placeCamera(viewer, frame);
+    viewer.frame();
+    camera->setPreDrawCallback(nullptr);
+    camera->setPostDrawCallback(nullptr);
+    const osg::Viewport* viewport = camera->getViewport();
+    const double covered = coverage * viewport->width() * viewport->height();
+    return begin->getFragments() >= 0.0 && covered > 0.0 ? begin->getFragments() / covered : -1.0;
+}
+
 /** A fresh viewer of the settings' size, realized, reading back colour only. */
 osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> createViewer(const BenchSettings& settings, osg::Node* scene)
 {
@@ -110,9 +171,10 @@ bool measure(const BenchSettings& settings, osg::Node* scene, double& firstFrame
 bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings, BenchResult& result,
                  std::string& renderer)
 {
-    result = BenchResult{c.technique, c.shape, c.n, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, radius};
+    result = BenchResult{c.technique, c.shape, c.n, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, radius, c.culling};
     osg::ref_ptr<osg::Geode> scene = new osg::Geode;
-    scene->addDrawable(createCloud(c, radius, settings, result.bytesPerGlyph).get());
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = createCloud(c, radius, settings, result.bytesPerGlyph);
+    scene->addDrawable(cloud.get());
     std::vector<double> frameMs;
     osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer;
     if (!measure(settings, scene.get(), result.firstFrameMs, frameMs, viewer))
@@ -122,6 +184,11 @@ bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings
     result.msMax = *std::max_element(frameMs.begin(), frameMs.end());
     result.coverage = getCoverage(*viewer->getColorImage());
     renderer = viewer->getFrameCapture()->getGLRenderer();
+    const osgGlyphs::GlyphCullingStatistics statistics =
+        cloud->getCullingStatistics(viewer->getCamera()->getGraphicsContext()->getState()->getContextID());
+    if (statistics.rounds > 0 && cloud->getNumGlyphs() > 0)
+        result.submitted = double(statistics.glyphsSubmitted) / cloud->getNumGlyphs();
+    result.overdraw = measureOverdraw(*viewer, result.coverage, settings.frames);
     return true;
 }
 

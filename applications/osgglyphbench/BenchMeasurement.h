@@ -15,6 +15,7 @@ struct BenchCase
     std::string technique;
     osgGlyphs::GlyphShape shape;
     unsigned int n;
+    osgGlyphs::GlyphCulling culling = osgGlyphs::GlyphCulling::Off;
 };
 
 /** One measured case: a row of the CSV. */
@@ -30,6 +31,12 @@ struct BenchResult
     double bytesPerGlyph;
     double coverage;
     float radius;
+    osgGlyphs::GlyphCulling culling = osgGlyphs::GlyphCulling::Off;
+    /** Fragments shaded per pixel drawn on, in one more frame (a pipeline statistics query);
+     * negative where GL cannot count them. */
+    double overdraw = -1.0;
+    /** The fraction of the glyphs that culling sent to the GPU in the last frame. */
+    double submitted = 1.0;
 };
 
 /** Measures one case, a random cloud of glyphs of this radius, in a fresh headless viewer: one

@@ -113,6 +113,10 @@ bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
     if (arguments.read("--n", text) &&
         !parseList(arguments, "--n", text, "positive integers", parseCount, settings.counts))
         return false;
+    if (arguments.read("--culling", text) &&
+        !parseList(arguments, "--culling", text, "off, frustum, occlusion", osgGlyphs::parseCulling,
+                   settings.cullings))
+        return false;
     if (arguments.read("--data-path", text) && !parseDataPath(text, settings.dataPath))
     {
         arguments.reportError("--data-path: unknown value '" + text + "' (vbo, client-arrays, display-list)");
@@ -141,6 +145,7 @@ void readValues(osg::ArgumentParser& arguments, BenchSettings& settings)
     arguments.read("--size", settings.width, settings.height);
     arguments.read("--frames", settings.frames);
     arguments.read("--radius", settings.radius);
+    arguments.read("--radius-spacing", settings.radiusSpacing);
     settings.equalCoverage = arguments.read("--equal-coverage");
     arguments.read("--seed", settings.seed);
     arguments.read("--max-ms", settings.maxMs);
@@ -184,6 +189,15 @@ void describeBenchOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--radius <r>",
                                "Glyph radius (default: getDefaultRandomRadius(n) = 0.5/sqrt(n), "
                                "at most 0.1, for a constant covered fraction of the view).");
+    usage.addCommandLineOption(
+        "--radius-spacing <f>",
+        "Dense data: the radius is f times the mean spacing of the points, n^(-1/3) in "
+        "the unit cube (0.4 is osgglyphviewer's default radius; glyphs touch at 0.5).");
+    usage.addCommandLineOption(
+        "--culling <a,b,...>",
+        "How clouds skip hidden glyphs, each measured in turn: off, frustum, occlusion "
+        "(default occlusion; GlyphCloud::setCulling). Techniques that cannot cull are "
+        "measured once, with culling off.");
     usage.addCommandLineOption("--equal-coverage",
                                "Give cones, arrows and cylinders the radius at which they cover as much of "
                                "the view as spheres of the radius above, at the same n (from one untimed "

@@ -3,6 +3,7 @@
 #ifndef OSGGLYPHBENCH_BENCHOPTIONS_H
 #define OSGGLYPHBENCH_BENCHOPTIONS_H 1
 
+#include <osgGlyphs/GlyphCulling>
 #include <osgGlyphs/GlyphTechnique>
 #include <osgGlyphsHeadless/HeadlessContext>
 
@@ -35,7 +36,9 @@ struct BenchSettings
     int width = 800;
     int height = 600;
     unsigned int frames = 10;
-    float radius = 0.0f; // <= 0: getDefaultRandomRadius(n)
+    float radius = 0.0f;        // <= 0: getDefaultRandomRadius(n)
+    float radiusSpacing = 0.0f; // > 0: the radius is this multiple of the mean spacing n^(-1/3)
+    std::vector<osgGlyphs::GlyphCulling> cullings = {osgGlyphs::GlyphCulling::Occlusion};
     bool equalCoverage = false;
     unsigned int seed = 1;
     double maxMs = 0.0; // 0: no limit

@@ -22,7 +22,12 @@ void printProgress(const BenchResult& result, std::size_t index, std::size_t tot
 /** Writes the CSV row of a case and flushes it, so that an interrupted run keeps its rows. */
 void writeCsvRow(std::ostream& csv, const BenchResult& result, const BenchSettings& settings);
 
-/** The result of a technique, shape and n, or null if it was not measured. */
+/** The results of a technique, shape and n, one per culling measured. */
+std::vector<const BenchResult*> findResults(const std::vector<BenchResult>& results,
+                                            const std::string& technique, osgGlyphs::GlyphShape shape,
+                                            unsigned int n);
+
+/** The first result of a technique, shape and n, or null if it was not measured. */
 const BenchResult* findResult(const std::vector<BenchResult>& results, std::string technique,
                               osgGlyphs::GlyphShape shape, unsigned int n);
 

@@ -23,6 +23,15 @@ std::string whyNotMeasured(const std::string& name, osgGlyphs::GlyphShape shape,
     return std::string();
 }
 
+/** The cullings a technique is measured with: --culling where it can cull, else off (display
+ * lists keep one frame's choice of chunks, so clouds drawn from them do not cull). */
+std::vector<osgGlyphs::GlyphCulling> getCullings(const std::string& name, const BenchSettings& settings)
+{
+    if (osgGlyphs::createTechnique(name)->supportsCulling() && settings.dataPath != DataPath::DisplayList)
+        return settings.cullings;
+    return {osgGlyphs::GlyphCulling::Off};
+}
+
 /** Every case to measure, by shape, then n, then technique, so that an interrupted run has
  * every technique at the smaller n. Prints the (technique, shape) pairs skipped. */
 std::vector<BenchCase> listCases(const BenchSettings& settings)
@@ -42,7 +51,8 @@ std::vector<BenchCase> listCases(const BenchSettings& settings)
         }
         for (unsigned int n : settings.counts)
             for (const std::string& technique : measured)
-                cases.push_back(BenchCase{technique, shape, n});
+                for (osgGlyphs::GlyphCulling culling : getCullings(technique, settings))
+                    cases.push_back(BenchCase{technique, shape, n, culling});
     }
     return cases;
 }
@@ -54,7 +64,8 @@ bool isOverBudget(const std::vector<BenchResult>& results, const BenchCase& c, c
         return false;
     for (const BenchResult& result : results)
     {
-        if (result.technique == c.technique && result.shape == c.shape && result.msMedian > settings.maxMs)
+        if (result.technique == c.technique && result.shape == c.shape && result.culling == c.culling &&
+            result.msMedian > settings.maxMs)
             return true;
     }
     return false;

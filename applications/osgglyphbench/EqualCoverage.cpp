@@ -53,8 +53,9 @@ double scaleToCoverage(const BenchCase& c, double radius, double target, const B
 
 float getCaseRadius(const BenchCase& c, const BenchSettings& settings, CaseRadii& found)
 {
-    const float radius =
-        settings.radius > 0.0f ? settings.radius : osgGlyphsData::getDefaultRandomRadius(c.n);
+    const float radius = settings.radius > 0.0f          ? settings.radius
+                         : settings.radiusSpacing > 0.0f ? settings.radiusSpacing / std::cbrt(float(c.n))
+                                                         : osgGlyphsData::getDefaultRandomRadius(c.n);
     if (!settings.equalCoverage || c.shape == osgGlyphs::GlyphShape::Sphere)
         return radius;
     const std::pair<int, unsigned int> key(static_cast<int>(c.shape), c.n);

@@ -1,5 +1,7 @@
 // osgGlyphs: the screen-space bound of a glyph, shared by every technique that ray-casts.
 
+#include "occlusion.glsl"
+
 // True when the framebuffer has one sample per pixel, at its centre (no multisampling).
 uniform bool osgGlyphs_singleSample;
 
@@ -41,8 +43,8 @@ bool coversASample(vec2 corners[4])
 }
 
 /** Four NDC corners (in triangle-strip order) of a rectangle that contains the glyph, and the
-  * NDC depth of its nearest point; false when the glyph is wholly behind the near plane or
-  * covers no sample. */
+  * NDC depth of its nearest point; false when the glyph is wholly behind the near plane, covers
+  * no sample or lies behind what is drawn (isOccluded). */
 bool glyphBound(Glyph glyph, out vec2 corners[4], out float nearestNdcZ)
 {
 #ifdef OSGGLYPHS_VECTOR_SHAPE
@@ -54,5 +56,5 @@ bool glyphBound(Glyph glyph, out vec2 corners[4], out float nearestNdcZ)
         return false;
     corners = vec2[4](box.xy, box.zy, box.xw, box.zw);
 #endif
-    return coversASample(corners);
+    return coversASample(corners) && !isOccluded(corners, nearestNdcZ);
 }

@@ -1,4 +1,5 @@
 #version 330 compatibility
+#extension GL_ARB_conservative_depth : enable
 // osgGlyphs, the impostor techniques' pixels: each fragment ray-casts the glyph's exact surface,
 // lights it and writes its true depth, so that glyphs intersect each other and ordinary
 // geometry as if they were tessellated exactly.
@@ -11,6 +12,12 @@
 #include "varyings.glsl"
 
 out vec4 color;
+
+#ifdef GL_ARB_conservative_depth
+// The surface lies at or behind the primitive, which every technique places at the glyph's
+// nearest depth: a driver may reject fragments behind the depth buffer before ray-casting them.
+layout(depth_greater) out float gl_FragDepth;
+#endif
 
 /** The nearest surface point along the ray (t from the near plane) and its unit normal, or
   * false. A glyph entered before the near plane is cut there: the cut faces the viewer. */

@@ -158,6 +158,8 @@ TEST_F(GlyphCloudData, GPUFootprintPerGlyph)
 {
     osg::ref_ptr<GlyphCloud> cloud = createScalarRow({0.0f, 1.0f, 2.0f, 3.0f});
     cloud->setRadii(makeArray<osg::FloatArray>({0.5f, 0.6f, 0.7f, 0.8f}));
+    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 20.0) << "position + radius + scalar + the spatial order's index";
+    cloud->setCulling(osgGlyphs::GlyphCulling::Off);
     EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 16.0) << "position + radius + scalar";
     cloud->setColors(makeArray<osg::Vec4ubArray>({osg::Vec4ub(1, 2, 3, 4), osg::Vec4ub(1, 2, 3, 4),
                                                   osg::Vec4ub(1, 2, 3, 4), osg::Vec4ub(1, 2, 3, 4)}));
@@ -220,6 +222,7 @@ TEST_F(GlyphCloudData, UncompressedRadiiAreExact)
     EXPECT_GT(compressed.wrongDepth, 100) << "half-float radii are rounded";
 
     cloud->setCompressedAttributes(false);
+    cloud->setCulling(osgGlyphs::GlyphCulling::Off);
     EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 24.0) << "position + RGBA8 + radius and scalar as floats";
     const Agreement exact =
         compareWithTruth(renderer.render(group({cloud.get()}).get()), truth, palette, exactDepth);

@@ -1,3 +1,4 @@
+#include <osgGlyphs/GlyphCulling>
 #include <osgGlyphs/GlyphStyle>
 
 #include "EnumNames.h"
@@ -14,6 +15,9 @@ const std::pair<GlyphShape, const char*> SHAPE_NAMES[] = {{GlyphShape::Sphere, "
 
 const std::pair<GlyphAnchor, const char*> ANCHOR_NAMES[] = {
     {GlyphAnchor::Tail, "tail"}, {GlyphAnchor::Center, "center"}, {GlyphAnchor::Head, "head"}};
+
+const std::pair<GlyphCulling, const char*> CULLING_NAMES[] = {
+    {GlyphCulling::Off, "off"}, {GlyphCulling::Frustum, "frustum"}, {GlyphCulling::Occlusion, "occlusion"}};
 
 }
 
@@ -35,6 +39,16 @@ const char* osgGlyphs::getAnchorName(GlyphAnchor anchor)
 bool osgGlyphs::parseAnchor(const std::string& name, GlyphAnchor& anchor)
 {
     return detail::parseName(ANCHOR_NAMES, name, anchor);
+}
+
+const char* osgGlyphs::getCullingName(GlyphCulling culling)
+{
+    return detail::nameOf(CULLING_NAMES, culling);
+}
+
+bool osgGlyphs::parseCulling(const std::string& name, GlyphCulling& culling)
+{
+    return detail::parseName(CULLING_NAMES, name, culling);
 }
 
 float osgGlyphs::getAnchorFraction(GlyphAnchor anchor)

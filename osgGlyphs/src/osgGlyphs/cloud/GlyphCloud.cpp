@@ -1,6 +1,7 @@
 #include <osgGlyphs/GlyphCloud>
 #include <osgGlyphs/GlyphStateCache>
 
+#include "../culling/ChunkDrawer.h"
 #include "../state/ViewState.h"
 
 #include <osg/Uniform>
@@ -36,7 +37,7 @@ GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
       _anchor(other._anchor), _lengthScale(other._lengthScale), _uniformLength(other._uniformLength),
       _arrowParams(other._arrowParams), _lit(other._lit), _compressedAttributes(other._compressedAttributes),
       _autoRange(other._autoRange), _rangeMin(other._rangeMin), _rangeMax(other._rangeMax),
-      _material(other._material)
+      _material(other._material), _culling(other._culling), _cullingChunkSize(other._cullingChunkSize)
 {
     initialize();
 }
@@ -137,6 +138,7 @@ void GlyphCloud::setTechnique(GlyphTechnique* technique)
 {
     _technique = technique ? technique : createTechnique(DEFAULT_GLYPH_TECHNIQUE).get();
     _builtFor = {};
+    updateChunks();
     buildPrimitives();
     updateStateSet();
 }
@@ -156,6 +158,8 @@ void GlyphCloud::setLengthScale(float lengthScale)
 {
     _lengthScale = lengthScale;
     updateVectorUniforms();
+    updateChunks();
+    buildPrimitives();
     dirtyBound();
 }
 
@@ -163,6 +167,8 @@ void GlyphCloud::setUniformLength(bool uniformLength)
 {
     _uniformLength = uniformLength;
     updateVectorUniforms();
+    updateChunks();
+    buildPrimitives();
     dirtyBound();
 }
 
@@ -170,6 +176,8 @@ void GlyphCloud::setAnchor(GlyphAnchor anchor)
 {
     _anchor = anchor;
     updateVectorUniforms();
+    updateChunks();
+    buildPrimitives();
     dirtyBound();
 }
 
@@ -178,6 +186,7 @@ void GlyphCloud::setArrowHead(float lengthRatio, float radiusRatio)
     _arrowParams.set(lengthRatio, radiusRatio);
     _arrowParamsUniform->set(_arrowParams);
     _builtFor = {}; // a technique may bake the arrow's proportions into its primitives
+    updateChunks();
     buildPrimitives();
     dirtyBound();
 }
@@ -243,6 +252,36 @@ void GlyphCloud::setMaterial(float ambient, float specular, float shininess)
     _materialUniform->set(_material);
 }
 
+void GlyphCloud::setCulling(GlyphCulling culling)
+{
+    _culling = culling;
+    updateChunks();
+    buildPrimitives();
+}
+
+void GlyphCloud::setCullingChunkSize(unsigned int glyphs)
+{
+    _cullingChunkSize = std::max(1u, glyphs);
+    updateChunks();
+    buildPrimitives();
+}
+
+GlyphCullingStatistics GlyphCloud::getCullingStatistics(unsigned int contextID) const
+{
+    return contextID < _cullingStatistics.size() ? _cullingStatistics[contextID] : GlyphCullingStatistics();
+}
+
+void GlyphCloud::updateChunks()
+{
+    if (_culling == GlyphCulling::Off || !getEffectiveTechnique()->supportsCulling())
+    {
+        _chunks.reset();
+        return;
+    }
+    _chunks = std::make_shared<const detail::GlyphChunks>(detail::buildGlyphChunks(
+        _numGlyphs, [this](unsigned int i) { return computeGlyphBox(i); }, _cullingChunkSize));
+}
+
 void GlyphCloud::dirtyGlyphs()
 {
     updateGlyphs();
@@ -269,6 +308,7 @@ GlyphArrays GlyphCloud::getGlyphArrays() const
     arrays.colors = _colorMode == GlyphColorMode::RGBA ? _colors.get() : nullptr;
     arrays.vectors = hasVectorShape() ? _vectors.get() : nullptr;
     arrays.count = _numGlyphs;
+    arrays.order = _chunks ? _chunks->order.get() : nullptr;
     return arrays;
 }
 
@@ -276,8 +316,9 @@ void GlyphCloud::buildPrimitives()
 {
     const GlyphTechnique* technique = getEffectiveTechnique();
     const GlyphArrays arrays = getGlyphArrays();
-    const auto builtFor = std::make_tuple(technique, arrays.positions, arrays.radiusScalar, arrays.colors,
-                                          arrays.vectors, arrays.count);
+    const auto builtFor =
+        std::make_tuple(technique, arrays.positions, arrays.radiusScalar, arrays.colors, arrays.vectors,
+                        arrays.count, static_cast<const osg::PrimitiveSet*>(arrays.order));
     if (builtFor == _builtFor && !technique->copiesArrays())
         return; // the same arrays, drawn the same way: changed contents upload by themselves
     _builtFor = builtFor;
@@ -301,6 +342,9 @@ double GlyphCloud::getGPUBytesPerGlyph() const
         bytes += array ? array->getTotalDataSize() : 0;
     for (const osg::ref_ptr<osg::Array>& array : getVertexAttribArrayList())
         bytes += array.valid() ? array->getTotalDataSize() : 0;
+    for (const osg::ref_ptr<osg::PrimitiveSet>& primitives : getPrimitiveSetList())
+        if (const osg::DrawElements* elements = primitives->getDrawElements())
+            bytes += elements->getTotalDataSize(); // the spatial order of a cloud that culls
     return bytes / _numGlyphs;
 }
 
@@ -329,9 +373,38 @@ void GlyphCloud::accept(osg::NodeVisitor& nv)
     cv->popStateSet();
 }
 
+void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
+{
+    const std::shared_ptr<const detail::GlyphChunks> chunks = _chunks;
+    osg::State& state = *renderInfo.getState();
+    GlyphCullingStatistics& statistics = _cullingStatistics[state.getContextID()];
+    // A display list would keep one frame's choice of chunks.
+    if (!chunks || !getEffectiveTechnique()->supportsCulling() || (_useDisplayList && _supportsDisplayList))
+    {
+        statistics = GlyphCullingStatistics();
+        osg::Geometry::drawImplementation(renderInfo);
+        return;
+    }
+    // osg::Geometry::drawImplementation, with the chunks that may be seen as its primitives.
+    const bool usingVertexBufferObjects =
+        state.useVertexBufferObject(_supportsVertexBufferObjects && _useVertexBufferObjects);
+    const bool usingVertexArrayObjects =
+        usingVertexBufferObjects && state.useVertexArrayObject(_useVertexArrayObject);
+    osg::VertexArrayState* vas = state.getCurrentVertexArrayState();
+    vas->setVertexBufferObjectSupported(usingVertexBufferObjects);
+    drawVertexArraysImplementation(renderInfo);
+    statistics = detail::drawChunks(renderInfo, *chunks, _culling, usingVertexBufferObjects);
+    if (usingVertexBufferObjects && !usingVertexArrayObjects)
+    {
+        vas->unbindVertexBufferObject();
+        vas->unbindElementBufferObject();
+    }
+}
+
 void GlyphCloud::resizeGLObjectBuffers(unsigned int maxSize)
 {
     osg::Geometry::resizeGLObjectBuffers(maxSize);
+    _cullingStatistics.resize(maxSize);
     _variantStateSet->resizeGLObjectBuffers(maxSize);
     _cloudStateSet->resizeGLObjectBuffers(maxSize);
 }

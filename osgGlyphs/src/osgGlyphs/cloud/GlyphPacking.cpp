@@ -114,6 +114,8 @@ void GlyphCloud::updateGlyphs(bool report)
     if (report && (positions || radii || scalars || vectorsChanged))
         reportSkipped();
     updateScalarMapping();
+    if (positions || radii || vectorsChanged || !flipped.empty())
+        updateChunks();
     buildPrimitives();
 }
 
@@ -292,37 +294,41 @@ void GlyphCloud::updateScalarMapping()
     _scalarToColormapUniform->set(mapping);
 }
 
+osg::BoundingBox GlyphCloud::computeGlyphBox(unsigned int i) const
+{
+    osg::BoundingBox box;
+    const uint16_t halfRadius = i < _numGlyphs ? static_cast<uint16_t>((*_packed)[i] & 0xffffu) : 0;
+    if (halfRadius == 0)
+        return box;
+    const float widest = _shape == GlyphShape::Arrow ? std::max(_arrowParams.y(), 1.0f) : 1.0f;
+    const float relative = _compressedAttributes ? detail::fromHalf(halfRadius) : (*_unpacked)[i].x();
+    const float radius = relative * _radiusScale * widest;
+    const osg::Vec3 pad(radius, radius, radius);
+    const osg::Vec3& p = (*_positions)[i];
+    if (!hasVectorShape())
+    {
+        box.expandBy(p - pad);
+        box.expandBy(p + pad);
+        return box;
+    }
+    // The glyph lies within its radius of the segment from tail to head.
+    const osg::Vec3& v = (*_vectors)[i];
+    const float magnitude = v.length();
+    const osg::Vec3 axis = v / magnitude;
+    const float length = _uniformLength ? _lengthScale : _lengthScale * magnitude;
+    const osg::Vec3 tail = p - axis * (length * getAnchorFraction(_anchor));
+    for (const osg::Vec3& end : {tail, tail + axis * length})
+    {
+        box.expandBy(end - pad);
+        box.expandBy(end + pad);
+    }
+    return box;
+}
+
 osg::BoundingBox GlyphCloud::computeBoundingBox() const
 {
-    const float anchor = getAnchorFraction(_anchor);
-    const float widest = _shape == GlyphShape::Arrow ? std::max(_arrowParams.y(), 1.0f) : 1.0f;
     osg::BoundingBox box;
     for (unsigned int i = 0; i < _numGlyphs; ++i)
-    {
-        const uint16_t halfRadius = static_cast<uint16_t>((*_packed)[i] & 0xffffu);
-        if (halfRadius == 0)
-            continue;
-        const float relative = _compressedAttributes ? detail::fromHalf(halfRadius) : (*_unpacked)[i].x();
-        const float radius = relative * _radiusScale * widest;
-        const osg::Vec3 pad(radius, radius, radius);
-        const osg::Vec3& p = (*_positions)[i];
-        if (!hasVectorShape())
-        {
-            box.expandBy(p - pad);
-            box.expandBy(p + pad);
-            continue;
-        }
-        // The glyph lies within its radius of the segment from tail to head.
-        const osg::Vec3& v = (*_vectors)[i];
-        const float magnitude = v.length();
-        const osg::Vec3 axis = v / magnitude;
-        const float length = _uniformLength ? _lengthScale : _lengthScale * magnitude;
-        const osg::Vec3 tail = p - axis * (length * anchor);
-        for (const osg::Vec3& end : {tail, tail + axis * length})
-        {
-            box.expandBy(end - pad);
-            box.expandBy(end + pad);
-        }
-    }
+        box.expandBy(computeGlyphBox(i));
     return box;
 }

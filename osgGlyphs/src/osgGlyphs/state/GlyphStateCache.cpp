@@ -1,5 +1,6 @@
 #include <osgGlyphs/GlyphStateCache>
 
+#include "../culling/OcclusionContext.h"
 #include "GlyphDefines.h"
 
 #include <osg/ContextData>
@@ -128,6 +129,9 @@ osg::ref_ptr<osg::StateSet> GlyphStateCache::createStateSet(const GlyphTechnique
         stateSet->setTextureAttribute(COLORMAP_TEXTURE_UNIT, variant.colorMap->getTexture());
         stateSet->addUniform(new osg::Uniform("osgGlyphs_colormap", static_cast<int>(COLORMAP_TEXTURE_UNIT)));
     }
+    // The depth pyramid of occlusion culling is bound while a cloud draws (ChunkDrawer).
+    stateSet->addUniform(
+        new osg::Uniform("osgGlyphs_depthPyramid", static_cast<int>(detail::DEPTH_PYRAMID_TEXTURE_UNIT)));
     technique.configureStateSet(*stateSet, variant);
     return stateSet;
 }

@@ -1,0 +1,246 @@
+#include "ChunkDrawer.h"
+#include "OcclusionContext.h"
+
+#include <osg/ContextData>
+#include <osg/Depth>
+#include <osg/GLExtensions>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace osgGlyphs;
+using namespace osgGlyphs::detail;
+
+namespace
+{
+
+/** Where the rounds end, as fractions of the chunks in view, nearest first: the first round lays
+ * down the front of the cloud, each later one is tested against everything before it. */
+const double ROUND_ENDS[] = {1.0 / 32.0, 1.0 / 8.0, 1.0 / 2.0, 1.0};
+
+/** Too few chunks in view to be worth reading the depth back. */
+const size_t MIN_CHUNKS_FOR_OCCLUSION = 16;
+
+/** How far behind the pyramid a chunk or glyph must lie (window depth): 16 steps of a 24-bit
+ * depth buffer, against rounding. */
+const float OCCLUSION_MARGIN = 1.0f / (1 << 20);
+
+/** The texels per axis over which a chunk is tested: a fine bound over its whole rectangle, since
+ * random packings leave narrow gaps that show far into a cloud. */
+const int CHUNK_TEST_TEXELS = 16;
+
+/** A chunk in view: its pixel rectangle (inclusive, relative to the viewport) and the window
+ * depth of its nearest point. */
+struct ChunkInView
+{
+    unsigned int chunk;
+    float nearest;
+    int x0, y0, x1, y1;
+};
+
+/** Projects a chunk's box: false when it is outside the view. */
+bool projectChunk(const osg::BoundingBox& box, const osg::Matrixd& modelViewProjection, double width,
+                  double height, double depthNear, double depthFar, ChunkInView& projected)
+{
+    unsigned int outside[6] = {0, 0, 0, 0, 0, 0};
+    bool behindEye = false;
+    double xMin = 1e300, yMin = 1e300, zMin = 1e300, xMax = -1e300, yMax = -1e300;
+    for (unsigned int corner = 0; corner < 8; ++corner)
+    {
+        const osg::Vec4d clip = osg::Vec4d(box.corner(corner), 1.0) * modelViewProjection;
+        const double w = clip.w();
+        outside[0] += clip.x() < -w;
+        outside[1] += clip.x() > w;
+        outside[2] += clip.y() < -w;
+        outside[3] += clip.y() > w;
+        outside[4] += clip.z() < -w;
+        outside[5] += clip.z() > w;
+        if (w <= 0.0 || clip.z() < -w)
+        {
+            behindEye = true;
+            continue;
+        }
+        xMin = std::min(xMin, clip.x() / w);
+        xMax = std::max(xMax, clip.x() / w);
+        yMin = std::min(yMin, clip.y() / w);
+        yMax = std::max(yMax, clip.y() / w);
+        zMin = std::min(zMin, clip.z() / w);
+    }
+    for (unsigned int count : outside)
+        if (count == 8)
+            return false;
+    if (behindEye)
+    {
+        // Crosses the near plane: it may cover any pixel, at any depth.
+        projected.nearest = 0.0f;
+        projected.x0 = projected.y0 = 0;
+        projected.x1 = int(width) - 1;
+        projected.y1 = int(height) - 1;
+        return true;
+    }
+    const double windowZ = 0.5 * ((depthFar - depthNear) * zMin + depthNear + depthFar);
+    projected.nearest = float(std::max(0.0, windowZ));
+    projected.x0 = int(std::floor(std::clamp((xMin + 1.0) * 0.5 * width, 0.0, width - 1.0)));
+    projected.x1 = int(std::floor(std::clamp((xMax + 1.0) * 0.5 * width, 0.0, width - 1.0)));
+    projected.y0 = int(std::floor(std::clamp((yMin + 1.0) * 0.5 * height, 0.0, height - 1.0)));
+    projected.y1 = int(std::floor(std::clamp((yMax + 1.0) * 0.5 * height, 0.0, height - 1.0)));
+    return true;
+}
+
+/** Whether the depth buffer holds what a pyramid test assumes: nearer wins and every glyph drawn
+ * writes its depth, one sample per pixel. */
+bool canTestDepth(osg::State& state, float& depthNear, float& depthFar)
+{
+    const auto* depth =
+        dynamic_cast<const osg::Depth*>(state.getLastAppliedAttribute(osg::StateAttribute::DEPTH));
+    depthNear = depth ? float(depth->getZNear()) : 0.0f;
+    depthFar = depth ? float(depth->getZFar()) : 1.0f;
+    const osg::Depth::Function function = depth ? depth->getFunction() : osg::Depth::LESS;
+    const bool writes = depth ? depth->getWriteMask() : true;
+    if (!state.getLastAppliedMode(GL_DEPTH_TEST) || !writes || depthNear > depthFar ||
+        (function != osg::Depth::LESS && function != osg::Depth::LEQUAL))
+        return false;
+    GLint sampleBuffers = 0;
+    glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+    return sampleBuffers == 0;
+}
+
+/** The glyph programs' occlusion test: on against the context's pyramid of these levels, or off. */
+void setGlyphTest(osg::State& state, int levels, const OcclusionContext* context = nullptr)
+{
+    const osg::Program::PerContextProgram* program = state.getLastAppliedProgramObject();
+    if (!program)
+        return;
+    osg::GLExtensions* ext = state.get<osg::GLExtensions>();
+    static const unsigned int testID = osg::Uniform::getNameID("osgGlyphs_occlusion");
+    static const unsigned int levelsID = osg::Uniform::getNameID("osgGlyphs_pyramidLevels");
+    const GLint test = program->getUniformLocation(testID);
+    if (test >= 0)
+        ext->glUniform3f(test, levels > 0 ? 1.0f : 0.0f, float(levels), OCCLUSION_MARGIN);
+    const GLint rectangles = program->getUniformLocation(levelsID);
+    if (rectangles >= 0 && levels > 0 && context)
+        ext->glUniform4iv(rectangles, levels, context->getAtlasLevels().data());
+}
+
+/** Draws chunks as one multi-draw of their index ranges, and lists of glyph ids. */
+class RangeDrawer
+{
+public:
+    RangeDrawer(osg::State& state, const GlyphChunks& chunks, bool usingVertexBufferObjects)
+        : _state(state), _chunks(chunks), _usingVertexBufferObjects(usingVertexBufferObjects)
+    {
+    }
+
+    unsigned int drawChunks(const std::vector<unsigned int>& chunkIndices)
+    {
+        const char* base = bind(*_chunks.order);
+        _counts.clear();
+        _offsets.clear();
+        unsigned int glyphs = 0;
+        for (unsigned int index : chunkIndices)
+        {
+            const GlyphChunk& chunk = _chunks.chunks[index];
+            _counts.push_back(GLsizei(chunk.count));
+            _offsets.push_back(base + size_t(chunk.first) * sizeof(GLuint));
+            glyphs += chunk.count;
+        }
+        if (!_counts.empty())
+            _state.get<osg::GLExtensions>()->glMultiDrawElements(GL_POINTS, _counts.data(), GL_UNSIGNED_INT,
+                                                                 _offsets.data(), GLsizei(_counts.size()));
+        return glyphs;
+    }
+
+private:
+    /** Binds the indices' element buffer; the address of the first index to draw from. */
+    const char* bind(const osg::DrawElementsUInt& indices)
+    {
+        osg::GLBufferObject* ebo =
+            _usingVertexBufferObjects ? indices.getOrCreateGLBufferObject(_state.getContextID()) : nullptr;
+        if (!ebo)
+            return reinterpret_cast<const char*>(indices.empty() ? nullptr : &indices.front());
+        _state.getCurrentVertexArrayState()->bindElementBufferObject(ebo);
+        return reinterpret_cast<const char*>(ebo->getOffset(indices.getBufferIndex()));
+    }
+
+    osg::State& _state;
+    const GlyphChunks& _chunks;
+    bool _usingVertexBufferObjects;
+    std::vector<GLsizei> _counts;
+    std::vector<const void*> _offsets;
+};
+
+}
+
+GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo, const GlyphChunks& chunks,
+                                                     GlyphCulling culling, bool usingVertexBufferObjects)
+{
+    osg::State& state = *renderInfo.getState();
+    GlyphCullingStatistics statistics;
+    statistics.chunks = static_cast<unsigned int>(chunks.chunks.size());
+    const osg::Viewport* viewport = state.getCurrentViewport();
+    if (!viewport || chunks.chunks.empty())
+        return statistics;
+
+    float depthNear = 0.0f, depthFar = 1.0f;
+    const bool occlusion = culling == GlyphCulling::Occlusion && canTestDepth(state, depthNear, depthFar);
+    const osg::Matrixd modelViewProjection = state.getModelViewMatrix() * state.getProjectionMatrix();
+    std::vector<ChunkInView> inView;
+    inView.reserve(chunks.chunks.size());
+    for (unsigned int index = 0; index < chunks.chunks.size(); ++index)
+    {
+        ChunkInView projected;
+        projected.chunk = index;
+        if (projectChunk(chunks.chunks[index].box, modelViewProjection, viewport->width(), viewport->height(),
+                         depthNear, depthFar, projected))
+            inView.push_back(projected);
+    }
+    statistics.chunksOutsideView = statistics.chunks - static_cast<unsigned int>(inView.size());
+    std::sort(inView.begin(), inView.end(),
+              [](const ChunkInView& a, const ChunkInView& b) { return a.nearest < b.nearest; });
+
+    RangeDrawer drawer(state, chunks, usingVertexBufferObjects);
+    std::vector<unsigned int> round;
+    if (!occlusion || inView.size() < MIN_CHUNKS_FOR_OCCLUSION)
+    {
+        for (const ChunkInView& chunk : inView)
+            round.push_back(chunk.chunk);
+        statistics.glyphsSubmitted = drawer.drawChunks(round);
+        statistics.rounds = 1;
+        return statistics;
+    }
+
+    OcclusionContext* context = osg::get<OcclusionContext>(state.getContextID());
+    bool testing = false;
+    size_t begin = 0;
+    for (double end : ROUND_ENDS)
+    {
+        if (begin >= inView.size())
+            break;
+        if (begin > 0)
+        {
+            // What the rounds so far drew is what this one is tested against.
+            ++statistics.depthReadbacks;
+            testing = context->readDepth(state, *viewport);
+            setGlyphTest(state, testing ? context->applyPyramidTexture(state) : 0, context);
+        }
+        const size_t roundEnd =
+            std::min(inView.size(), std::max(begin + 1, size_t(std::ceil(end * double(inView.size())))));
+        round.clear();
+        for (size_t k = begin; k < roundEnd; ++k)
+        {
+            const ChunkInView& chunk = inView[k];
+            const float farthest = testing ? context->getPyramid().farthest(chunk.x0, chunk.y0, chunk.x1,
+                                                                            chunk.y1, CHUNK_TEST_TEXELS)
+                                           : 1.0f;
+            if (testing && chunk.nearest > farthest + OCCLUSION_MARGIN)
+                ++statistics.chunksOccluded;
+            else
+                round.push_back(chunk.chunk);
+        }
+        statistics.glyphsSubmitted += drawer.drawChunks(round);
+        ++statistics.rounds;
+        begin = roundEnd;
+    }
+    setGlyphTest(state, 0);
+    return statistics;
+}

@@ -1,0 +1,64 @@
+/* osgGlyphs - private: a graphics context's depth read-back and depth pyramid texture. Not installed. */
+
+#ifndef OSGGLYPHS_OCCLUSIONCONTEXT_H
+#define OSGGLYPHS_OCCLUSIONCONTEXT_H 1
+
+#include "DepthPyramid.h"
+
+#include <osg/GLObjects>
+#include <osg/Image>
+#include <osg/State>
+#include <osg/Texture2D>
+#include <osg/Viewport>
+
+namespace osgGlyphs
+{
+namespace detail
+{
+
+/** The texture unit of the depth pyramid that glyph programs test glyphs against. */
+const unsigned int DEPTH_PYRAMID_TEXTURE_UNIT = 7;
+
+/** The most levels of the depth pyramid the glyph programs read: 2^16 pixels a side. */
+const int MAX_PYRAMID_TEXTURE_LEVELS = 16;
+
+/** What occlusion culling needs in one graphics context: the depth it reads back, the pyramid
+ * built over it, and that pyramid as a texture for the glyph programs: one level, an atlas of
+ * the pyramid's levels from level 1 up (llvmpipe fetches wrong texels when the lanes of one
+ * texelFetch ask for different mipmap levels). Lives in the context's osg::ContextData (osg::get<>), so only
+ * the context's draw thread uses it, and releases its texture when OSG deletes the context's objects. */
+class OcclusionContext : public osg::GraphicsObjectManager
+{
+public:
+    explicit OcclusionContext(unsigned int contextID);
+
+    /** Reads back the depth under the viewport and builds the pyramid over it; false (and no
+     * pyramid) where the read failed. */
+    bool readDepth(osg::State& state, const osg::Viewport& viewport);
+
+    const DepthPyramid& getPyramid() const { return _pyramid; }
+
+    /** Uploads the pyramid and binds it on DEPTH_PYRAMID_TEXTURE_UNIT; returns the levels in the
+     * atlas (0: nothing to test against), whose rectangles (x, y, width, height) getAtlasLevels()
+     * lists: entry j holds the pyramid's level j + 1. */
+    int applyPyramidTexture(osg::State& state);
+    const std::vector<GLint>& getAtlasLevels() const { return _atlasLevels; }
+
+    void flushDeletedGLObjects(double, double&) override {}
+    void flushAllDeletedGLObjects() override {}
+    void deleteAllGLObjects() override { release(); }
+    void discardAllGLObjects() override { release(); }
+
+protected:
+    void release();
+
+    DepthPyramid _pyramid;
+    std::vector<GLint> _atlasLevels;
+    osg::ref_ptr<osg::Image> _image;
+    osg::ref_ptr<osg::Texture2D> _texture;
+};
+
+}
+}
+
+#endif

@@ -1,0 +1,91 @@
+// The structures of culling against brute force: the depth pyramid bounds every rectangle's
+// farthest depth from above, tightly at level 0; the spatial order is a permutation of the drawn
+// glyphs, and each chunk's box holds its glyphs.
+
+#include "culling/DepthPyramid.h"
+#include "culling/GlyphChunks.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <set>
+
+using namespace osgGlyphs::detail;
+
+TEST(DepthPyramid, BoundsEveryRectangleFromAbove)
+{
+    std::mt19937 random(3);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (const auto& size :
+         {std::pair<int, int>(37, 23), std::pair<int, int>(64, 64), std::pair<int, int>(1, 9)})
+    {
+        const int width = size.first, height = size.second;
+        std::vector<float> depth(size_t(width) * height);
+        for (float& d : depth)
+            d = unit(random);
+        DepthPyramid pyramid;
+        pyramid.build(depth, width, height);
+        ASSERT_TRUE(pyramid.valid());
+        EXPECT_EQ(pyramid.getWidth(pyramid.getNumLevels() - 1), 1);
+        EXPECT_EQ(pyramid.getHeight(pyramid.getNumLevels() - 1), 1);
+        for (int trial = 0; trial < 2000; ++trial)
+        {
+            int x0 = int(unit(random) * width), x1 = int(unit(random) * width);
+            int y0 = int(unit(random) * height), y1 = int(unit(random) * height);
+            if (x0 > x1)
+                std::swap(x0, x1);
+            if (y0 > y1)
+                std::swap(y0, y1);
+            float truth = 0.0f;
+            for (int y = y0; y <= y1; ++y)
+                for (int x = x0; x <= x1; ++x)
+                    truth = std::max(truth, depth[size_t(y) * width + x]);
+            for (int texels : {2, 4, 16})
+                ASSERT_GE(pyramid.farthest(x0, y0, x1, y1, texels), truth)
+                    << width << "x" << height << " [" << x0 << "," << x1 << "]x[" << y0 << "," << y1 << "]";
+            if (x1 - x0 < 2 && y1 - y0 < 2)
+                EXPECT_EQ(pyramid.farthest(x0, y0, x1, y1), truth) << "level 0 is exact";
+        }
+    }
+}
+
+TEST(GlyphChunks, OrderIsAPermutationOfTheDrawnGlyphsAndBoxesHoldThem)
+{
+    std::mt19937 random(5);
+    std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+    std::vector<osg::BoundingBox> boxes(5000);
+    for (size_t i = 0; i < boxes.size(); ++i)
+    {
+        if (i % 97 == 0)
+            continue; // not drawn
+        // A cluster of coincident glyphs as well: more than a chunk in one cell.
+        const osg::Vec3 centre =
+            i < 1500 ? osg::Vec3(0.5f, 0.5f, 0.5f) : osg::Vec3(unit(random), unit(random), unit(random));
+        boxes[i].expandBy(centre - osg::Vec3(0.01f, 0.01f, 0.01f));
+        boxes[i].expandBy(centre + osg::Vec3(0.01f, 0.01f, 0.01f));
+    }
+    const GlyphChunks chunks = buildGlyphChunks(
+        unsigned(boxes.size()), [&](unsigned int i) { return boxes[i]; }, 64);
+    std::multiset<unsigned int> ids(chunks.order->begin(), chunks.order->end());
+    unsigned int drawn = 0;
+    for (unsigned int i = 0; i < boxes.size(); ++i)
+    {
+        drawn += boxes[i].valid();
+        EXPECT_EQ(ids.count(i), boxes[i].valid() ? 1u : 0u) << i;
+    }
+    EXPECT_EQ(chunks.order->size(), drawn);
+    unsigned int covered = 0;
+    for (const GlyphChunk& chunk : chunks.chunks)
+    {
+        EXPECT_EQ(chunk.first, covered);
+        covered += chunk.count;
+        for (unsigned int k = chunk.first; k < chunk.first + chunk.count; ++k)
+        {
+            const osg::BoundingBox& box = boxes[(*chunks.order)[k]];
+            EXPECT_TRUE(chunk.box.contains(box._min) && chunk.box.contains(box._max));
+        }
+    }
+    EXPECT_EQ(covered, drawn);
+    EXPECT_GT(chunks.chunks.size(), drawn / 64);
+}
