@@ -301,17 +301,20 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
         typical = _radius = _options.radius;
     else
     {
-        osg::BoundingBox box;
+        // In double: the extent of float positions may exceed the range of a float.
+        osg::BoundingBoxd box;
         for (const osg::Vec3f& p : positions)
         {
-            if (p.isNaN() || !std::isfinite(p.length2()))
-                continue;
-            box.expandBy(p);
+            if (std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()))
+                box.expandBy(osg::Vec3d(p));
         }
-        const float diagonal = box.valid() ? (box._max - box._min).length() : 0.0f;
-        const float spacing = detail::estimateNeighbourDistance(positions);
-        _radius = std::max(spacing * (vectorShape ? 0.2f : 0.4f), diagonal / (vectorShape ? 500.0f : 250.0f));
-        typical = _radius = _radius > 0.0f ? _radius : 0.5f;
+        const double diagonal = box.valid() ? (box._max - box._min).length() : 0.0;
+        const double spacing = detail::estimateNeighbourDistance(positions);
+        const double radius =
+            std::max(spacing * (vectorShape ? 0.2 : 0.4), diagonal / (vectorShape ? 500.0 : 250.0));
+        typical = _radius =
+            radius > 0.0 ? static_cast<float>(std::min(radius, double(std::numeric_limits<float>::max())))
+                         : 0.5f;
     }
 
     _lengthScale = _options.lengthScale > 0.0f ? _options.lengthScale : 1.0f;
