@@ -60,7 +60,8 @@ bool isSkipped(std::string_view line)
 
 } // namespace
 
-void osgGlyphsData::readers::readCsv(TextScanner& scanner, PointDataset& dataset)
+void osgGlyphsData::readers::readCsv(TextScanner& scanner, PointDataset& dataset,
+                                     const PointReadOptions& options)
 {
     std::string_view line;
     bool found = false;
@@ -111,6 +112,5 @@ void osgGlyphsData::readers::readCsv(TextScanner& scanner, PointDataset& dataset
         for (std::size_t c = 0; c < fields.size(); ++c)
             table.appendField(c, fields[c]);
     }
-    osg::ref_ptr<PointData> frame = table.finish();
-    dataset.addFrame(frame.get());
+    addOnlyFrame(scanner, dataset, options, table.finish().get());
 }

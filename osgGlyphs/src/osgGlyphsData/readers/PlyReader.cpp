@@ -355,7 +355,8 @@ void readAsciiBody(TextScanner& scanner, ColumnTable& table, const std::vector<E
 
 } // namespace
 
-void osgGlyphsData::readers::readPly(TextScanner& scanner, PointDataset& dataset)
+void osgGlyphsData::readers::readPly(TextScanner& scanner, PointDataset& dataset,
+                                     const PointReadOptions& options)
 {
     Header header = readHeader(scanner);
     Element* vertex = nullptr;
@@ -401,5 +402,5 @@ void osgGlyphsData::readers::readPly(TextScanner& scanner, PointDataset& dataset
     }
     if (table.getNumColumns() == 0)
         table.addEmptyRows(vertex->count);
-    dataset.addFrame(table.finish().get());
+    addOnlyFrame(scanner, dataset, options, table.finish().get());
 }

@@ -557,8 +557,9 @@ private:
 
 } // namespace
 
-void osgGlyphsData::readers::readVtk(TextScanner& scanner, PointDataset& dataset)
+void osgGlyphsData::readers::readVtk(TextScanner& scanner, PointDataset& dataset,
+                                     const PointReadOptions& options)
 {
     VtkReader reader(scanner);
-    dataset.addFrame(reader.read().get());
+    addOnlyFrame(scanner, dataset, options, reader.read().get());
 }
