@@ -141,6 +141,40 @@ TEST(GlyphsPlugin, EveryFrameOfAFileBecomesASequence)
     EXPECT_EQ(sequence->getMode(), osg::Sequence::START);
 }
 
+// Messages about a frame name it, and show the bytes of a column name that would not show.
+TEST(GlyphMapper, MessagesNameTheFrameAndShowHiddenBytes)
+{
+    const std::string text =
+        "ITEM: TIMESTEP\n100\nITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id element x y z\n1 C 0 0 0\n"
+        "ITEM: TIMESTEP\n200\nITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id type x y z\n1 1 0 0 0\n";
+    std::istringstream stream(text);
+    std::string error;
+    osg::ref_ptr<osgGlyphsData::PointDataset> dataset = osgGlyphsData::readPointStream(
+        stream, "lammps", "run.lammpstrj", osgGlyphsData::PointReadOptions(), error);
+    ASSERT_TRUE(dataset.valid()) << error;
+    osgGlyphsData::GlyphMapper mapper{osgGlyphsData::GlyphMappingOptions()};
+    ASSERT_TRUE(mapper.prepare(*dataset, 0, error)) << error;
+    EXPECT_FALSE(mapper.createCloud(*dataset->getFrame(1), error).valid());
+    EXPECT_EQ(error,
+              "run.lammpstrj timestep 200: no column 'element' for the radii of the elements; available "
+              "columns: id type x y z");
+
+    std::istringstream bom("# exported\n\xEF\xBB\xBFx,y,z\n1,2,3\n");
+    dataset = osgGlyphsData::readPointStream(bom, "csv", "bom.csv", osgGlyphsData::PointReadOptions(), error);
+    ASSERT_TRUE(dataset.valid()) << error;
+    EXPECT_EQ(dataset->getFrame(0)->getColumnNames(), (std::vector<std::string>{"x", "y", "z"}));
+
+    std::istringstream hidden(
+        "ITEM: TIMESTEP\n1\nITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id \xEF\xBB\xBFx y z\n1 0 0 0\n");
+    dataset = osgGlyphsData::readPointStream(hidden, "lammps", "bom.lammpstrj",
+                                             osgGlyphsData::PointReadOptions(), error);
+    ASSERT_TRUE(dataset.valid()) << error;
+    EXPECT_FALSE(mapper.prepare(*dataset, 0, error));
+    EXPECT_EQ(error,
+              "bom.lammpstrj: no position columns (x y z, xu yu zu, xs ys zs or xsu ysu zsu); available "
+              "columns: id '\\xef\\xbb\\xbfx' y z");
+}
+
 TEST(GlyphsPlugin, PseudoExtensionAndPreloadedPluginTakePlyFromOsgsOwnReader)
 {
     std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"

@@ -67,8 +67,9 @@ void osgGlyphsData::readers::readCsv(TextScanner& scanner, PointDataset& dataset
     bool found = false;
     while (!found && scanner.nextLine(line))
     {
-        if (scanner.getLineNumber() == 1 && startsWith(line, "\xEF\xBB\xBF"))
-            line.remove_prefix(3); // UTF-8 byte order mark
+        // A UTF-8 byte order mark: at the start of the file, or of a file appended to comments.
+        if (startsWith(line, "\xEF\xBB\xBF"))
+            line.remove_prefix(3);
         found = !isSkipped(line);
     }
     if (!found)
