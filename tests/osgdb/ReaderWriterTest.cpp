@@ -141,6 +141,30 @@ TEST(GlyphsPlugin, EveryFrameOfAFileBecomesASequence)
     EXPECT_EQ(sequence->getMode(), osg::Sequence::START);
 }
 
+// Every frame is a cloud: without a frame option a long dump shows its first frame (and says so)
+// rather than build a cloud for each of its frames; frame=all still plays them all.
+TEST(GlyphsPlugin, ALongDumpShowsItsFirstFrameUnlessAllAreAskedFor)
+{
+    std::string text;
+    for (int step = 0; step < 1001; ++step)
+        text += "ITEM: TIMESTEP\n" + std::to_string(step) +
+                "\nITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id x y z\n1 0 0 " + std::to_string(step) + "\n";
+    const std::string file = writeTestFile("long.lammpstrj", text);
+    ReadResult first = readWithPlugin(file, "radius=1");
+    GlyphCloud* cloud = asCloud(first.getNode());
+    ASSERT_NE(cloud, nullptr) << first.message();
+    EXPECT_FLOAT_EQ((*cloud->getPositions())[0].z(), 0.0f);
+
+    ReadResult all = readWithPlugin(file, "radius=1 frame=all");
+    osg::Sequence* sequence = dynamic_cast<osg::Sequence*>(all.getNode());
+    ASSERT_NE(sequence, nullptr) << all.message();
+    EXPECT_EQ(sequence->getNumChildren(), 1001u);
+
+    ReadResult last = readWithPlugin(file, "radius=1 frame=1000");
+    ASSERT_NE(asCloud(last.getNode()), nullptr) << last.message();
+    EXPECT_FLOAT_EQ((*asCloud(last.getNode())->getPositions())[0].z(), 1000.0f);
+}
+
 // Messages about a frame name it, and show the bytes of a column name that would not show.
 TEST(GlyphMapper, MessagesNameTheFrameAndShowHiddenBytes)
 {
