@@ -141,6 +141,64 @@ TEST(GlyphsPlugin, EveryFrameOfAFileBecomesASequence)
     EXPECT_EQ(sequence->getMode(), osg::Sequence::START);
 }
 
+// Every frame is a cloud: without a frame option a long dump shows its first frame (and says so)
+// rather than build a cloud for each of its frames; frame=all still plays them all.
+TEST(GlyphsPlugin, ALongDumpShowsItsFirstFrameUnlessAllAreAskedFor)
+{
+    std::string text;
+    for (int step = 0; step < 1001; ++step)
+        text += "ITEM: TIMESTEP\n" + std::to_string(step) +
+                "\nITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id x y z\n1 0 0 " + std::to_string(step) + "\n";
+    const std::string file = writeTestFile("long.lammpstrj", text);
+    ReadResult first = readWithPlugin(file, "radius=1");
+    GlyphCloud* cloud = asCloud(first.getNode());
+    ASSERT_NE(cloud, nullptr) << first.message();
+    EXPECT_FLOAT_EQ((*cloud->getPositions())[0].z(), 0.0f);
+
+    ReadResult all = readWithPlugin(file, "radius=1 frame=all");
+    osg::Sequence* sequence = dynamic_cast<osg::Sequence*>(all.getNode());
+    ASSERT_NE(sequence, nullptr) << all.message();
+    EXPECT_EQ(sequence->getNumChildren(), 1001u);
+
+    ReadResult last = readWithPlugin(file, "radius=1 frame=1000");
+    ASSERT_NE(asCloud(last.getNode()), nullptr) << last.message();
+    EXPECT_FLOAT_EQ((*asCloud(last.getNode())->getPositions())[0].z(), 1000.0f);
+}
+
+// Messages about a frame name it, and show the bytes of a column name that would not show.
+TEST(GlyphMapper, MessagesNameTheFrameAndShowHiddenBytes)
+{
+    const std::string text =
+        "ITEM: TIMESTEP\n100\nITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id element x y z\n1 C 0 0 0\n"
+        "ITEM: TIMESTEP\n200\nITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id type x y z\n1 1 0 0 0\n";
+    std::istringstream stream(text);
+    std::string error;
+    osg::ref_ptr<osgGlyphsData::PointDataset> dataset = osgGlyphsData::readPointStream(
+        stream, "lammps", "run.lammpstrj", osgGlyphsData::PointReadOptions(), error);
+    ASSERT_TRUE(dataset.valid()) << error;
+    osgGlyphsData::GlyphMapper mapper{osgGlyphsData::GlyphMappingOptions()};
+    ASSERT_TRUE(mapper.prepare(*dataset, 0, error)) << error;
+    EXPECT_FALSE(mapper.createCloud(*dataset->getFrame(1), error).valid());
+    EXPECT_EQ(error,
+              "run.lammpstrj timestep 200: no column 'element' for the radii of the elements; available "
+              "columns: id type x y z");
+
+    std::istringstream bom("# exported\n\xEF\xBB\xBFx,y,z\n1,2,3\n");
+    dataset = osgGlyphsData::readPointStream(bom, "csv", "bom.csv", osgGlyphsData::PointReadOptions(), error);
+    ASSERT_TRUE(dataset.valid()) << error;
+    EXPECT_EQ(dataset->getFrame(0)->getColumnNames(), (std::vector<std::string>{"x", "y", "z"}));
+
+    std::istringstream hidden(
+        "ITEM: TIMESTEP\n1\nITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id \xEF\xBB\xBFx y z\n1 0 0 0\n");
+    dataset = osgGlyphsData::readPointStream(hidden, "lammps", "bom.lammpstrj",
+                                             osgGlyphsData::PointReadOptions(), error);
+    ASSERT_TRUE(dataset.valid()) << error;
+    EXPECT_FALSE(mapper.prepare(*dataset, 0, error));
+    EXPECT_EQ(error,
+              "bom.lammpstrj: no position columns (x y z, xu yu zu, xs ys zs or xsu ysu zsu); available "
+              "columns: id '\\xef\\xbb\\xbfx' y z");
+}
+
 TEST(GlyphsPlugin, PseudoExtensionAndPreloadedPluginTakePlyFromOsgsOwnReader)
 {
     std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"

@@ -141,16 +141,145 @@ TEST(LammpsReader, RejectsTruncatedDumps)
               "cut.lammpstrj:11: unexpected end of file: ITEM: ATOMS has 2 of 3 rows");
     EXPECT_EQ(readError(text.substr(0, text.find("-5.0 5.0")), "lammps", "cut.lammpstrj"),
               "cut.lammpstrj:6: unexpected end of file, expected the y bounds of ITEM: BOX BOUNDS");
-    EXPECT_EQ(readError(text.substr(0, text.find("ITEM: NUMBER OF ATOMS\n2")), "lammps", "cut.lammpstrj"),
-              "cut.lammpstrj:14: unexpected end of file: the last timestep has no ITEM: ATOMS section");
+    EXPECT_EQ(readError(text.substr(0, text.find("2 2 1.5")), "lammps", "cut.lammpstrj"),
+              "cut.lammpstrj:4: ITEM: NUMBER OF ATOMS is 3, more than the 0 bytes left in the file can hold");
     EXPECT_EQ(
         readError(text.substr(0, text.find("1 1 0.5") + 10), "lammps", "cut.lammpstrj"),
-        "cut.lammpstrj:4: ITEM: NUMBER OF ATOMS is 3, more than the 10 bytes left in the file can hold");
+        "cut.lammpstrj:10: wrong number of columns: 4 fields, expected 9 (id type x y z vx vy vz c_pe)");
     std::string shortLine = text;
     shortLine.replace(shortLine.find("2 2 1.5 2.75 4e-1"), 17, "2 2 1.5 2.75");
     EXPECT_EQ(
         readError(shortLine, "lammps", "short.lammpstrj"),
         "short.lammpstrj:11: wrong number of columns: 8 fields, expected 9 (id type x y z vx vy vz c_pe)");
+}
+
+// A dump that a simulation is still writing: the complete frames load; the frame being written is
+// left out with one warning naming the file, the line and the frame.
+TEST(LammpsReader, LeavesOutATruncatedLastFrame)
+{
+    const std::string text = twoFrames;
+    const std::string suffix = "; frame 2 is incomplete and left out";
+    const std::vector<std::pair<std::size_t, std::string>> cuts = {
+        {text.find("ITEM: NUMBER OF ATOMS\n2"),
+         "cut.lammpstrj:14: unexpected end of file: the last timestep has no ITEM: ATOMS section"},
+        {text.find("-6 6"),
+         "cut.lammpstrj:18: unexpected end of file, expected the y bounds of ITEM: BOX BOUNDS"},
+        {text.find("1 1 -3"),
+         "cut.lammpstrj:16: ITEM: NUMBER OF ATOMS is 2, more than the 0 bytes left in the file can hold"},
+        {text.find("1 1 -3") + 4,
+         "cut.lammpstrj:16: ITEM: NUMBER OF ATOMS is 2, more than the 4 bytes left in the file can hold"},
+        {text.find("2 2 12") + 3,
+         "cut.lammpstrj:22: wrong number of columns: 2 fields, expected 5 (id type xu yu zu)"},
+    };
+    for (const auto& cut : cuts)
+    {
+        std::vector<std::string> warnings;
+        std::string error;
+        osg::ref_ptr<PointDataset> dataset = readWithOptions(
+            text.substr(0, cut.first), "lammps", PointReadOptions(), warnings, error, "cut.lammpstrj");
+        ASSERT_TRUE(dataset.valid()) << error;
+        ASSERT_EQ(dataset->getNumFrames(), 1u);
+        EXPECT_EQ(dataset->getFrame(0)->getTimestep(), 100);
+        EXPECT_EQ(warnings, std::vector<std::string>{cut.second + suffix});
+        EXPECT_EQ(dataset->getWarnings(), warnings);
+        const PointStreamPosition end = dataset->getEndOfCompleteFrames();
+        EXPECT_EQ(end.offset, text.find("ITEM: TIMESTEP\n200"));
+        EXPECT_EQ(end.line, 12u);
+        EXPECT_EQ(end.frame, 1u);
+    }
+}
+
+// A frame cut short with more frames after it is a malformed file, not one still being written.
+TEST(LammpsReader, RejectsATruncatedFrameBeforeOthers)
+{
+    std::string text = twoFrames;
+    text.erase(text.find("1 1 -3"));
+    text += "ITEM: TIMESTEP\n300\nITEM: NUMBER OF ATOMS\n1\nITEM: ATOMS id x y z\n1 0 0 0\n";
+    EXPECT_EQ(readError(text, "lammps", "cut.lammpstrj"),
+              "cut.lammpstrj:23: 'ITEM: TIMESTEP' after 1 of 2 rows of ITEM: ATOMS");
+}
+
+// Reading a growing dump again from where its complete frames ended gets the frames it gained.
+TEST(LammpsReader, ResumesAGrowingDumpAfterItsCompleteFrames)
+{
+    const std::string text = twoFrames;
+    PointReadOptions options;
+    options.growing = true;
+    std::vector<std::string> warnings;
+    std::string error;
+    osg::ref_ptr<PointDataset> first = readWithOptions(text.substr(0, text.find("1 1 -3")), "lammps", options,
+                                                       warnings, error, "run.lammpstrj");
+    ASSERT_TRUE(first.valid()) << error;
+    ASSERT_EQ(first->getNumFrames(), 1u);
+
+    options.start = first->getEndOfCompleteFrames();
+    osg::ref_ptr<PointDataset> second = readWithOptions(text.substr(options.start.offset), "lammps", options,
+                                                        warnings, error, "run.lammpstrj");
+    ASSERT_TRUE(second.valid()) << error;
+    ASSERT_EQ(second->getNumFrames(), 1u);
+    EXPECT_EQ(second->getFrame(0)->getTimestep(), 200);
+    EXPECT_EQ(column(*second->getFrame(0), "xu"), (std::vector<float>{12.0f, -3.0f}));
+    EXPECT_EQ(second->getEndOfCompleteFrames().offset, text.size());
+    EXPECT_EQ(second->getEndOfCompleteFrames().line, 23u);
+    EXPECT_EQ(second->getEndOfCompleteFrames().frame, 2u);
+
+    // Nothing new yet: no frame, and no error.
+    options.start = second->getEndOfCompleteFrames();
+    osg::ref_ptr<PointDataset> none =
+        readWithOptions("", "lammps", options, warnings, error, "run.lammpstrj");
+    ASSERT_TRUE(none.valid()) << error;
+    EXPECT_EQ(none->getNumFrames(), 0u);
+    EXPECT_EQ(none->getEndOfCompleteFrames(), options.start);
+
+    // Messages count the lines on from the start.
+    EXPECT_EQ(readWithOptions("ITEM: TIMESTEP\nabc\n", "lammps", options, warnings, error, "run.lammpstrj"),
+              nullptr);
+    EXPECT_EQ(error, "run.lammpstrj:25: ITEM: TIMESTEP: 'abc' is not an integer timestep");
+}
+
+// Of a dump still being written, a last line without its end may be half a line: "1 1 -3 1 2" of
+// "1 1 -3 1 25". A file read as it is keeps such a line; one read as growing leaves its frame out.
+TEST(LammpsReader, LeavesOutAFrameWhoseLastLineHasNoEndOfAGrowingDump)
+{
+    const std::string text = std::string(twoFrames).substr(0, std::string(twoFrames).size() - 1);
+    std::vector<std::string> warnings;
+    std::string error;
+    osg::ref_ptr<PointDataset> dataset =
+        readWithOptions(text, "lammps", PointReadOptions(), warnings, error, "run.lammpstrj");
+    ASSERT_TRUE(dataset.valid()) << error;
+    EXPECT_EQ(dataset->getNumFrames(), 2u);
+    EXPECT_TRUE(warnings.empty());
+
+    PointReadOptions growing;
+    growing.growing = true;
+    dataset = readWithOptions(text, "lammps", growing, warnings, error, "run.lammpstrj");
+    ASSERT_TRUE(dataset.valid()) << error;
+    EXPECT_EQ(dataset->getNumFrames(), 1u);
+    EXPECT_EQ(warnings,
+              std::vector<std::string>{
+                  "run.lammpstrj:23: the last line has no end yet: frame 2 is incomplete and left out"});
+    EXPECT_EQ(dataset->getEndOfCompleteFrames().line, 12u);
+}
+
+// Frames without atoms cost memory and show nothing: they are left out, with one warning.
+TEST(LammpsReader, LeavesOutFramesWithoutAtoms)
+{
+    const std::string empty = "ITEM: TIMESTEP\n150\nITEM: NUMBER OF ATOMS\n0\nITEM: ATOMS id x y z\n";
+    std::string text = twoFrames;
+    text.insert(text.find("ITEM: TIMESTEP\n200"), empty + empty);
+    std::vector<std::string> warnings;
+    std::string error;
+    osg::ref_ptr<PointDataset> dataset =
+        readWithOptions(text, "lammps", PointReadOptions(), warnings, error, "gaps.lammpstrj");
+    ASSERT_TRUE(dataset.valid()) << error;
+    ASSERT_EQ(dataset->getNumFrames(), 2u);
+    EXPECT_EQ(dataset->getFrame(1)->getTimestep(), 200);
+    EXPECT_EQ(warnings, std::vector<std::string>{
+                            "gaps.lammpstrj:13: 2 frames without atoms left out, the first frame 2"});
+    EXPECT_EQ(dataset->getEndOfCompleteFrames().frame, 4u);
+
+    EXPECT_EQ(readError(empty + empty, "lammps", "empty.lammpstrj"),
+              "empty.lammpstrj:1: no atoms: all 2 frames are empty");
 }
 
 TEST(LammpsReader, RejectsCountsLargerThanTheData)
@@ -160,7 +289,7 @@ TEST(LammpsReader, RejectsCountsLargerThanTheData)
               "a.dump:11: 'ITEM: TIMESTEP' after 1 of 3 rows of ITEM: ATOMS");
     EXPECT_EQ(
         readError(dump("pp pp pp", cube, "id x y z", "1 0 0 0\n", "999999999999"), "lammps", "a.dump"),
-        "a.dump:4: ITEM: NUMBER OF ATOMS is 999999999999, more than the 8 bytes left in the file can hold");
+        "a.dump:4: ITEM: NUMBER OF ATOMS is 999999999999, more than the 0 bytes left in the file can hold");
     EXPECT_EQ(readError(dump("pp pp pp", cube, "id", "1\n", "-4"), "lammps", "a.dump"),
               "a.dump:4: ITEM: NUMBER OF ATOMS: '-4' is not a count");
 }

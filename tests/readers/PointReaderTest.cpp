@@ -180,3 +180,17 @@ TEST(PointReader, FailsAbsurdCountsOfStreamsOfUnknownSizeAtTheirEnd)
     EXPECT_FALSE(readPointStream(plyStream, "ply", "pipe.ply", PointReadOptions(), error).valid());
     EXPECT_EQ(error, "pipe.ply: byte 94: unexpected end of file: element 'vertex' has 1 of 4000000000 items");
 }
+
+// Counts that no stream can hold, from a pipe: the message names no made-up stream size.
+TEST(PointReader, NamesNoSizeOfAStreamOfUnknownSize)
+{
+    PipeBuffer pipe(
+        "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000000000000\nproperty double x\n"
+        "element face 2000000000000000000\nproperty double a\nend_header\n");
+    std::istream stream(&pipe);
+    std::string error;
+    EXPECT_FALSE(readPointStream(stream, "ply", "pipe.ply", PointReadOptions(), error).valid());
+    EXPECT_EQ(error,
+              "pipe.ply:5: element 'face' declares 2000000000000000000 items of at least 8 bytes, but with "
+              "the elements before it that is more than a stream can hold (2^64 bytes)");
+}

@@ -28,6 +28,16 @@ inline osg::ref_ptr<osgGlyphsData::PointDataset> readString(const std::string& t
     return osgGlyphsData::readPointStream(stream, format, name, osgGlyphsData::PointReadOptions(), error);
 }
 
+/** Reads text with options, keeping the warnings in warnings rather than printing them. */
+inline osg::ref_ptr<osgGlyphsData::PointDataset>
+readWithOptions(const std::string& text, const std::string& format, osgGlyphsData::PointReadOptions options,
+                std::vector<std::string>& warnings, std::string& error, const std::string& name = "data")
+{
+    std::istringstream stream(text);
+    options.warning = [&warnings](const std::string& warning) { warnings.push_back(warning); };
+    return osgGlyphsData::readPointStream(stream, format, name, options, error);
+}
+
 /** Reads what must be malformed; returns the error, failing the test when the read succeeds or
  * the message is not exactly one line. */
 inline std::string readError(const std::string& text, const std::string& format, const std::string& name)

@@ -123,3 +123,59 @@ TEST(XyzReader, RejectsBadProperties)
     EXPECT_EQ(readError("1\nLattice=\"1 0 0 0 1\" Properties=pos:R:3\n0 0 0\n", "xyz", "bad.xyz"),
               "bad.xyz:2: Lattice='1 0 0 0 1' does not have 9 numbers");
 }
+
+// A file still being written: the complete frames load; the last, cut short, is left out with one
+// warning naming the file, the line and the frame. A frame cut short before others is an error.
+TEST(XyzReader, LeavesOutATruncatedLastFrame)
+{
+    const std::string complete = "2\nstep=10\nC 0 0 0\nO 1 1 1\n2\nstep=20\nC 0 0 1\nO 1 1 2\n";
+    const std::string suffix = "; frame 3 is incomplete and left out";
+    const std::vector<std::pair<std::string, std::string>> cuts = {
+        {"2\n", "run.xyz:9: unexpected end of file, expected the comment line after the atom count"},
+        {"2\nstep=30\nC 0 0 2\n",
+         "run.xyz:9: the atom count 2 is more than the 0 bytes left in the file can hold"},
+        {"2\nstep=30\nC 0",
+         "run.xyz:11: an atom line needs at least 4 fields (species x y z), this one has 2"},
+    };
+    for (const auto& cut : cuts)
+    {
+        std::vector<std::string> warnings;
+        std::string error;
+        osg::ref_ptr<PointDataset> dataset =
+            readWithOptions(complete + cut.first, "xyz", PointReadOptions(), warnings, error, "run.xyz");
+        ASSERT_TRUE(dataset.valid()) << error;
+        ASSERT_EQ(dataset->getNumFrames(), 2u);
+        EXPECT_EQ(dataset->getFrame(1)->getTimestep(), 20);
+        EXPECT_EQ(warnings, std::vector<std::string>{cut.second + suffix});
+        EXPECT_EQ(dataset->getEndOfCompleteFrames().offset, complete.size());
+        EXPECT_EQ(dataset->getEndOfCompleteFrames().line, 8u);
+    }
+    EXPECT_EQ(readError(complete + "2\nstep=30\nC 0 0 2\n1\nc\nH 0 0 0\n", "xyz", "run.xyz"),
+              "run.xyz:12: wrong number of columns: 1 fields, expected 4 (species x y z)");
+}
+
+// Empty frames are left out with one warning; a file of only empty frames has no atoms.
+TEST(XyzReader, LeavesOutFramesWithoutAtoms)
+{
+    std::vector<std::string> warnings;
+    std::string error;
+    osg::ref_ptr<PointDataset> dataset = readWithOptions("0\n\n1\nstep=5\nC 0 0 0\n0\n\n0\nstep=7\n", "xyz",
+                                                         PointReadOptions(), warnings, error, "gaps.xyz");
+    ASSERT_TRUE(dataset.valid()) << error;
+    ASSERT_EQ(dataset->getNumFrames(), 1u);
+    EXPECT_EQ(dataset->getFrame(0)->getTimestep(), 5);
+    EXPECT_EQ(warnings,
+              std::vector<std::string>{"gaps.xyz:1: 3 frames without atoms left out, the first frame 1"});
+
+    EXPECT_EQ(readError("0\n\n", "xyz", "none.xyz"), "none.xyz:1: no atoms: frame 1 is empty");
+    EXPECT_EQ(readError("0\nProperties=species:S:1:pos:R:3\n0\n\n", "xyz", "none.xyz"),
+              "none.xyz:1: no atoms: all 2 frames are empty");
+}
+
+// Properties that list more columns than the rows have: the rows are blamed, not the atom count.
+TEST(XyzReader, BlamesRowsThatDoNotFitTheProperties)
+{
+    EXPECT_EQ(readError("3\nProperties=species:S:1:pos:R:3:charge:R:1:spin:R:1\nH 0 0 0\nH 1 1 1\n", "xyz",
+                        "props.xyz"),
+              "props.xyz:3: wrong number of columns: 4 fields, expected 6 (species x y z charge spin)");
+}

@@ -53,6 +53,24 @@ bool parseHex(const std::string& digits, osg::Vec4& color)
     return true;
 }
 
+/** A token in double quotes for a message: at most 40 characters, other bytes than printable
+ * ASCII as \\xNN. */
+std::string quoteForMessage(const std::string& token)
+{
+    static const char hex[] = "0123456789abcdef";
+    const size_t limit = 40;
+    std::string text = "\"";
+    for (size_t i = 0; i < token.size() && i < limit; ++i)
+    {
+        const unsigned char c = static_cast<unsigned char>(token[i]);
+        if (c >= 0x20 && c < 0x7F && c != '\\' && c != '"')
+            text += static_cast<char>(c);
+        else
+            text += std::string("\\x") + hex[c >> 4] + hex[c & 0xF];
+    }
+    return text + (token.size() > limit ? "...\"" : "\"");
+}
+
 }
 
 ColorMap::ColorMap()
@@ -115,8 +133,8 @@ osg::ref_ptr<ColorMap> ColorMap::parse(const std::string& name, const std::strin
             colors.push_back(color);
         else if (token[0] != '#')
         {
-            error = name + ":" + std::to_string(number) + ": expected a colour \"#rrggbb\", found \"" +
-                    token + "\"";
+            error = name + ":" + std::to_string(number) + ": expected a colour \"#rrggbb\", found " +
+                    quoteForMessage(token);
             return nullptr;
         }
     }
@@ -130,15 +148,28 @@ osg::ref_ptr<ColorMap> ColorMap::parse(const std::string& name, const std::strin
 
 osg::ref_ptr<ColorMap> ColorMap::readFile(const std::string& path, std::string& error)
 {
-    osgDB::ifstream file(path.c_str());
+    osgDB::ifstream file(path.c_str(), std::ios::binary);
     if (!file)
     {
         error = path + ": cannot open";
         return nullptr;
     }
-    std::ostringstream text;
-    text << file.rdbuf();
-    return parse(path, text.str(), error);
+    // Never more than the largest colour map: the path may name a device or a huge file.
+    std::string text(MaxFileBytes + 1, '\0');
+    file.read(&text[0], static_cast<std::streamsize>(text.size()));
+    if (file.bad())
+    {
+        error = path + ": cannot read";
+        return nullptr;
+    }
+    text.resize(static_cast<std::size_t>(file.gcount()));
+    if (text.size() > MaxFileBytes)
+    {
+        error = path + ": more than " + std::to_string(MaxFileBytes >> 10) +
+                " KiB, not a colour map (one #rrggbb a line)";
+        return nullptr;
+    }
+    return parse(path, text, error);
 }
 
 void ColorMap::setColors(const std::vector<osg::Vec4>& colors)

@@ -61,11 +61,6 @@ std::string formatNumber(float value)
     return text;
 }
 
-std::string missingColumn(const std::string& option, const std::string& column, const PointData& data)
-{
-    return option + ": no column '" + column + "' in " + data.getSource() + "; " + listColumns(data);
-}
-
 osg::Vec4ub toVec4ub(const osg::Vec4& color)
 {
     auto channel = [](float c)
@@ -93,8 +88,21 @@ void osgGlyphsData::applyGlyphStyle(GlyphCloud& cloud, const GlyphMappingOptions
         cloud.setScalarRange(options.rangeMin, options.rangeMax);
 }
 
+std::string GlyphMapper::frameName(const PointData& data) const
+{
+    return _multiFrame ? data.getSource() + " timestep " + std::to_string(data.getTimestep())
+                       : data.getSource();
+}
+
+std::string GlyphMapper::missingColumn(const std::string& option, const std::string& column,
+                                       const PointData& data) const
+{
+    return option + ": no column '" + column + "' in " + frameName(data) + "; " + listColumns(data);
+}
+
 bool GlyphMapper::prepare(const PointDataset& dataset, std::size_t startFrame, std::string& error)
 {
+    _multiFrame = dataset.getNumFrames() > 1;
     const PointData* data = dataset.getFrame(startFrame);
     if (!data)
     {
@@ -104,7 +112,7 @@ bool GlyphMapper::prepare(const PointDataset& dataset, std::size_t startFrame, s
     std::vector<osg::Vec3f> positions;
     if (!getPositions(*data, _options.positionColumns, positions, error))
     {
-        error = (_options.positionColumns.empty() ? data->getSource() : option("position")) + ": " + error;
+        error = (_options.positionColumns.empty() ? frameName(*data) : option("position")) + ": " + error;
         return false;
     }
     const bool vectorShape = _options.shape != GlyphShape::Sphere;
@@ -157,7 +165,7 @@ bool GlyphMapper::resolveVectors(const PointData& data, bool required, std::stri
     if (required)
     {
         error = option("glyph") + " " + getShapeName(_options.shape) + " needs vectors: no vx,vy,vz in " +
-                data.getSource() + " (name the columns with " + option("vector") + "); " + listColumns(data);
+                frameName(data) + " (name the columns with " + option("vector") + "); " + listColumns(data);
         return false;
     }
     return true;
@@ -172,7 +180,7 @@ bool GlyphMapper::resolveColor(const PointData& data, std::string& error)
     {
         if (_vectorColumns.empty())
         {
-            error = option("color-by") + " speed needs velocities: no vx,vy,vz in " + data.getSource() +
+            error = option("color-by") + " speed needs velocities: no vx,vy,vz in " + frameName(data) +
                     " (name the columns with " + option("vector") + "); " + listColumns(data);
             return false;
         }
@@ -227,7 +235,7 @@ bool GlyphMapper::computeScalars(const PointData& data, std::vector<float>& scal
     const std::vector<float>* v[3];
     if (!getColumnTriple(data, _vectorColumns, v))
     {
-        error = data.getSource() + ": speed needs the columns " + joinColumns(_vectorColumns) + "; " +
+        error = frameName(data) + ": speed needs the columns " + joinColumns(_vectorColumns) + "; " +
                 listColumns(data);
         return false;
     }
@@ -301,17 +309,20 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
         typical = _radius = _options.radius;
     else
     {
-        osg::BoundingBox box;
+        // In double: the extent of float positions may exceed the range of a float.
+        osg::BoundingBoxd box;
         for (const osg::Vec3f& p : positions)
         {
-            if (p.isNaN() || !std::isfinite(p.length2()))
-                continue;
-            box.expandBy(p);
+            if (std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()))
+                box.expandBy(osg::Vec3d(p));
         }
-        const float diagonal = box.valid() ? (box._max - box._min).length() : 0.0f;
-        const float spacing = detail::estimateNeighbourDistance(positions);
-        _radius = std::max(spacing * (vectorShape ? 0.2f : 0.4f), diagonal / (vectorShape ? 500.0f : 250.0f));
-        typical = _radius = _radius > 0.0f ? _radius : 0.5f;
+        const double diagonal = box.valid() ? (box._max - box._min).length() : 0.0;
+        const double spacing = detail::estimateNeighbourDistance(positions);
+        const double radius =
+            std::max(spacing * (vectorShape ? 0.2 : 0.4), diagonal / (vectorShape ? 500.0 : 250.0));
+        typical = _radius =
+            radius > 0.0 ? static_cast<float>(std::min(radius, double(std::numeric_limits<float>::max())))
+                         : 0.5f;
     }
 
     _lengthScale = _options.lengthScale > 0.0f ? _options.lengthScale : 1.0f;
@@ -381,7 +392,7 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
     osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
     if (!getPositions(data, _options.positionColumns, positions->asVector(), error))
     {
-        error = data.getSource() + ": " + error;
+        error = frameName(data) + ": " + error;
         return nullptr;
     }
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
@@ -403,7 +414,9 @@ bool GlyphMapper::setRadii(GlyphCloud& cloud, const PointData& data, std::string
     const std::vector<float>* column = data.getColumn(_elementRadii ? "element" : _radiusColumn);
     if (!column)
     {
-        error = missingColumn(option("radius-by"), _radiusColumn, data);
+        error = _elementRadii ? frameName(data) + ": no column 'element' for the radii of the elements; " +
+                                    listColumns(data)
+                              : missingColumn(option("radius-by"), _radiusColumn, data);
         return false;
     }
     osg::ref_ptr<osg::FloatArray> radii = new osg::FloatArray(cloud.getPositions()->size());
@@ -450,7 +463,7 @@ bool GlyphMapper::setColors(GlyphCloud& cloud, const PointData& data, std::strin
         const std::vector<float>* column = data.getColumn(name);
         if (!column)
         {
-            error = data.getSource() + ": no column '" + name + "' to colour by; " + listColumns(data);
+            error = frameName(data) + ": no column '" + name + "' to colour by; " + listColumns(data);
             return false;
         }
         for (std::size_t i = 0; i < n; ++i)
@@ -461,7 +474,7 @@ bool GlyphMapper::setColors(GlyphCloud& cloud, const PointData& data, std::strin
         const std::vector<float>* rgb[3];
         if (!getColumnTriple(data, RGB_COLUMNS, rgb))
         {
-            error = data.getSource() + ": no red, green, blue columns; " + listColumns(data);
+            error = frameName(data) + ": no red, green, blue columns; " + listColumns(data);
             return false;
         }
         for (std::size_t i = 0; i < n; ++i)

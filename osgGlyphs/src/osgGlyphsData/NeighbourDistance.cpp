@@ -1,6 +1,6 @@
 #include "NeighbourDistance.h"
 
-#include <osg/BoundingBox>
+#include <osg/Vec3d>
 
 #include <algorithm>
 #include <cmath>
@@ -10,82 +10,88 @@
 namespace
 {
 
-/** Point indices sorted into a uniform grid of about as many cells as points. */
+/** The work one nearest-neighbour search may do: every ring of cells it goes through, cell it
+ * looks into and point it compares counts one. */
+const std::size_t SEARCH_BUDGET = 100000;
+
+/** Points in a cell beyond which the grid keeps one point of each position. */
+const std::ptrdiff_t CROWDED_CELL = 8;
+
+/** Cells of the grid at most, whatever the number of points: any axis count fits an int. */
+const double MAX_CELLS = 1 << 30;
+
+osg::Vec3d toDouble(const osg::Vec3f& p)
+{
+    return osg::Vec3d(p.x(), p.y(), p.z());
+}
+
+bool lessByPosition(const osg::Vec3f& a, const osg::Vec3f& b)
+{
+    return a.x() != b.x() ? a.x() < b.x() : a.y() != b.y() ? a.y() < b.y() : a.z() < b.z();
+}
+
+/** Points sorted into a uniform grid of about as many cells as points. Geometry is in
+ * double: the extent of float positions can exceed the range of a float. */
 class PointGrid
 {
 public:
     PointGrid(const std::vector<osg::Vec3f>& positions, const std::vector<uint32_t>& indices,
-              const osg::BoundingBox& box)
-        : _positions(positions), _origin(box._min)
+              const osg::Vec3d& boxMin, const osg::Vec3d& boxMax)
+        : _positions(positions), _origin(boxMin)
     {
-        const osg::Vec3f extent = box._max - box._min;
-        const float largest = std::max(extent.x(), std::max(extent.y(), extent.z()));
-        const double cellLimit = 2.0 * indices.size() + 8.0;
+        const osg::Vec3d extent = boxMax - boxMin;
+        const double largest = std::max(extent.x(), std::max(extent.y(), extent.z()));
+        const double cellLimit = std::min(2.0 * indices.size() + 8.0, MAX_CELLS);
         double volume = 1.0;
         for (int axis = 0; axis < 3; ++axis)
-            volume *= std::max(extent[axis], largest * 1e-3f);
-        _cellSize = static_cast<float>(std::cbrt(volume / indices.size()));
+            volume *= std::max(extent[axis], largest * 1e-3);
+        _cellSize = std::cbrt(volume / indices.size());
         while (true)
         {
             double cells = 1.0;
             for (int axis = 0; axis < 3; ++axis)
             {
-                _dims[axis] = std::max(1, static_cast<int>(std::ceil(extent[axis] / _cellSize)));
+                const double along = std::ceil(extent[axis] / _cellSize);
+                _dims[axis] = static_cast<int>(std::min(std::max(along, 1.0), cellLimit));
                 cells *= _dims[axis];
             }
             if (cells <= cellLimit)
                 break;
-            _cellSize *= 1.25f;
+            _cellSize *= 1.25;
         }
-
-        // Counting sort of the points by cell.
-        _cellStart.assign(static_cast<std::size_t>(_dims[0]) * _dims[1] * _dims[2] + 1, 0);
-        for (uint32_t index : indices)
-            ++_cellStart[cellIndex(cellOf(positions[index])) + 1];
-        for (std::size_t cell = 1; cell < _cellStart.size(); ++cell)
-            _cellStart[cell] += _cellStart[cell - 1];
-        _sorted.resize(indices.size());
-        std::vector<uint32_t> next(_cellStart.begin(), _cellStart.end() - 1);
-        for (uint32_t index : indices)
-            _sorted[next[cellIndex(cellOf(positions[index]))]++] = index;
+        sortIntoCells(indices);
     }
 
     /** The squared distance from point index to its nearest neighbour at a distance > 0, or
-     * infinity when none is found within a bounded search. */
-    float nearestDistance2(uint32_t index) const
+     * infinity when none is found within SEARCH_BUDGET. The search looks into shells of cells
+     * around the point's cell, only at the cells of each shell that lie in the grid. */
+    double nearestDistance2(uint32_t index) const
     {
-        const osg::Vec3f& p = _positions[index];
-        const Cell centre = cellOf(p);
-        const int maxRing = std::max(_dims[0], std::max(_dims[1], _dims[2]));
-        const std::size_t cellBudget = 50000;
-        std::size_t cellsVisited = 0;
-        float best = std::numeric_limits<float>::infinity();
-        for (int ring = 0; ring <= maxRing && cellsVisited < cellBudget; ++ring)
+        Search search{toDouble(_positions[index]), cellOf(_positions[index])};
+        const Cell& c = search.centre;
+        const int lastRing =
+            std::max({c.i, _dims[0] - 1 - c.i, c.j, _dims[1] - 1 - c.j, c.k, _dims[2] - 1 - c.k});
+        visitBlock(search, {c.i, c.i}, {c.j, c.j}, {c.k, c.k});
+        for (int ring = 1; ring <= lastRing && search.work < SEARCH_BUDGET; ++ring)
         {
-            for (int i = centre.i - ring; i <= centre.i + ring; ++i)
-                for (int j = centre.j - ring; j <= centre.j + ring; ++j)
-                    for (int k = centre.k - ring; k <= centre.k + ring; ++k)
-                    {
-                        const bool onShell = std::abs(i - centre.i) == ring ||
-                                             std::abs(j - centre.j) == ring || std::abs(k - centre.k) == ring;
-                        if (!onShell || i < 0 || j < 0 || k < 0 || i >= _dims[0] || j >= _dims[1] ||
-                            k >= _dims[2])
-                            continue;
-                        ++cellsVisited;
-                        const std::size_t cell = cellIndex(Cell{i, j, k});
-                        for (uint32_t s = _cellStart[cell]; s < _cellStart[cell + 1]; ++s)
-                        {
-                            const float d2 = (_positions[_sorted[s]] - p).length2();
-                            if (d2 > 0.0f && d2 < best)
-                                best = d2;
-                        }
-                    }
+            // The shell's faces: two across i, then across j and k without the cells already seen.
+            const Range i = clamp({c.i - ring, c.i + ring}, 0), j = clamp({c.j - ring, c.j + ring}, 1),
+                        k = clamp({c.k - ring, c.k + ring}, 2);
+            const Range iInside = clamp({c.i - ring + 1, c.i + ring - 1}, 0);
+            const Range jInside = clamp({c.j - ring + 1, c.j + ring - 1}, 1);
+            for (int side : {-ring, ring})
+            {
+                visitBlock(search, clamp({c.i + side, c.i + side}, 0), j, k);
+                visitBlock(search, iInside, clamp({c.j + side, c.j + side}, 1), k);
+                visitBlock(search, iInside, jInside, clamp({c.k + side, c.k + side}, 2));
+            }
+            ++search.work;
             // Points beyond this ring are at least ring cells away.
-            const float reach = ring * _cellSize;
-            if (best <= reach * reach)
+            const double reach = ring * _cellSize;
+            if (search.best <= reach * reach)
                 break;
         }
-        return best;
+        return search.best;
     }
 
 private:
@@ -94,12 +100,86 @@ private:
         int i, j, k;
     };
 
+    /** Cells first to last along an axis; empty when last < first. */
+    struct Range
+    {
+        int first, last;
+    };
+
+    struct Search
+    {
+        osg::Vec3d point;
+        Cell centre;
+        double best = std::numeric_limits<double>::infinity();
+        std::size_t work = 0;
+    };
+
+    Range clamp(Range range, int axis) const
+    {
+        return Range{std::max(range.first, 0), std::min(range.last, _dims[axis] - 1)};
+    }
+
+    /** Compares the point of the search with those of a block of cells, within the budget. */
+    void visitBlock(Search& search, Range i, Range j, Range k) const
+    {
+        if (i.first > i.last || j.first > j.last || k.first > k.last)
+            return;
+        for (int ci = i.first; ci <= i.last && search.work < SEARCH_BUDGET; ++ci)
+            for (int cj = j.first; cj <= j.last && search.work < SEARCH_BUDGET; ++cj)
+                for (int ck = k.first; ck <= k.last && search.work < SEARCH_BUDGET; ++ck)
+                {
+                    const std::size_t cell = cellIndex(Cell{ci, cj, ck});
+                    ++search.work;
+                    for (uint32_t s = _cellStart[cell];
+                         s < _cellStart[cell + 1] && search.work < SEARCH_BUDGET; ++s, ++search.work)
+                    {
+                        const double d2 = (toDouble(_positions[_sorted[s]]) - search.point).length2();
+                        if (d2 > 0.0 && d2 < search.best)
+                            search.best = d2;
+                    }
+                }
+    }
+
+    /** A counting sort of the points by cell, keeping one point of each position in crowded cells. */
+    void sortIntoCells(const std::vector<uint32_t>& indices)
+    {
+        std::vector<uint32_t> start(static_cast<std::size_t>(_dims[0]) * _dims[1] * _dims[2] + 1, 0);
+        for (uint32_t index : indices)
+            ++start[cellIndex(cellOf(_positions[index])) + 1];
+        for (std::size_t cell = 1; cell < start.size(); ++cell)
+            start[cell] += start[cell - 1];
+        std::vector<uint32_t> sorted(indices.size());
+        std::vector<uint32_t> next(start.begin(), start.end() - 1);
+        for (uint32_t index : indices)
+            sorted[next[cellIndex(cellOf(_positions[index]))]++] = index;
+
+        auto byPosition = [this](uint32_t a, uint32_t b)
+        { return lessByPosition(_positions[a], _positions[b]); };
+        auto samePosition = [this](uint32_t a, uint32_t b) { return _positions[a] == _positions[b]; };
+        _cellStart.assign(start.size(), 0);
+        _sorted.reserve(sorted.size());
+        for (std::size_t cell = 0; cell + 1 < start.size(); ++cell)
+        {
+            const auto first = sorted.begin() + start[cell];
+            const auto last = sorted.begin() + start[cell + 1];
+            // Only crowded cells are worth the sort: a search through a few points is quick.
+            if (last - first > CROWDED_CELL)
+            {
+                std::sort(first, last, byPosition);
+                _sorted.insert(_sorted.end(), first, std::unique(first, last, samePosition));
+            }
+            else
+                _sorted.insert(_sorted.end(), first, last);
+            _cellStart[cell + 1] = static_cast<uint32_t>(_sorted.size());
+        }
+    }
+
     Cell cellOf(const osg::Vec3f& p) const
     {
         auto axis = [&](int a)
         {
-            const int c = static_cast<int>((p[a] - _origin[a]) / _cellSize);
-            return std::min(std::max(c, 0), _dims[a] - 1);
+            const double c = (p[a] - _origin[a]) / _cellSize;
+            return static_cast<int>(std::min(std::max(c, 0.0), _dims[a] - 1.0)); // truncates: c >= 0
         };
         return Cell{axis(0), axis(1), axis(2)};
     }
@@ -110,8 +190,8 @@ private:
     }
 
     const std::vector<osg::Vec3f>& _positions;
-    osg::Vec3f _origin;
-    float _cellSize = 1.0f;
+    osg::Vec3d _origin;
+    double _cellSize = 1.0;
     int _dims[3] = {1, 1, 1};
     std::vector<uint32_t> _cellStart;
     std::vector<uint32_t> _sorted;
@@ -119,35 +199,41 @@ private:
 
 }
 
-float osgGlyphsData::detail::estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions,
-                                                       unsigned int maxSamples)
+double osgGlyphsData::detail::estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions,
+                                                        unsigned int maxSamples)
 {
     std::vector<uint32_t> finite;
     finite.reserve(positions.size());
-    osg::BoundingBox box;
+    osg::Vec3d boxMin(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                      std::numeric_limits<double>::infinity());
+    osg::Vec3d boxMax = -boxMin;
     for (std::size_t i = 0; i < positions.size() && i < std::numeric_limits<uint32_t>::max(); ++i)
     {
         const osg::Vec3f& p = positions[i];
         if (std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()))
         {
             finite.push_back(static_cast<uint32_t>(i));
-            box.expandBy(p);
+            for (int axis = 0; axis < 3; ++axis)
+            {
+                boxMin[axis] = std::min(boxMin[axis], static_cast<double>(p[axis]));
+                boxMax[axis] = std::max(boxMax[axis], static_cast<double>(p[axis]));
+            }
         }
     }
-    if (finite.size() < 2 || box._min == box._max)
-        return 0.0f;
+    if (finite.size() < 2 || boxMin == boxMax)
+        return 0.0;
 
-    const PointGrid grid(positions, finite, box);
+    const PointGrid grid(positions, finite, boxMin, boxMax);
     const std::size_t stride = std::max<std::size_t>(1, finite.size() / std::max(1u, maxSamples));
-    std::vector<float> distances2;
+    std::vector<double> distances2;
     for (std::size_t s = 0; s < finite.size(); s += stride)
     {
-        const float d2 = grid.nearestDistance2(finite[s]);
+        const double d2 = grid.nearestDistance2(finite[s]);
         if (std::isfinite(d2))
             distances2.push_back(d2);
     }
     if (distances2.empty())
-        return 0.0f;
+        return 0.0;
     auto median = distances2.begin() + distances2.size() / 2;
     std::nth_element(distances2.begin(), median, distances2.end());
     return std::sqrt(*median);

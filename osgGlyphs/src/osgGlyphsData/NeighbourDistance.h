@@ -15,8 +15,11 @@ namespace detail
 /** The median distance from a point to its nearest neighbour, over an evenly spaced sample of at
  * most maxSamples points, found through a uniform grid. Points at the same place as their
  * neighbour and non-finite points are left out. Returns 0 when there are fewer than two distinct
- * finite points. */
-float estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions, unsigned int maxSamples = 2000);
+ * finite points. Computed in double: the spacing of float positions may exceed the range of a
+ * float. The search of each sample stops after a bounded amount of work, with the nearest
+ * neighbour found by then (none: the sample is left out), so that no layout of the points (flat,
+ * collinear, coincident, clustered) makes it slow. */
+double estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions, unsigned int maxSamples = 2000);
 
 }
 }

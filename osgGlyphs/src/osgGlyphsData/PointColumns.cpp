@@ -1,12 +1,45 @@
 #include "PointColumns.h"
 
+namespace
+{
+
+// A column name as a message shows it: bytes that would not show (control characters, a byte
+// order mark) as \xNN, and then the name in quotes.
+std::string visibleName(const std::string& name)
+{
+    static const char hex[] = "0123456789abcdef";
+    std::string shown;
+    bool escaped = false;
+    for (std::size_t i = 0; i < name.size(); ++i)
+    {
+        const unsigned char c = static_cast<unsigned char>(name[i]);
+        const bool byteOrderMark = name.compare(i, 3, "\xEF\xBB\xBF") == 0;
+        if (c >= 0x20 && c != 0x7F && !byteOrderMark)
+        {
+            shown += name[i];
+            continue;
+        }
+        const std::size_t count = byteOrderMark ? 3 : 1;
+        for (std::size_t k = 0; k < count; ++k)
+        {
+            const unsigned char b = static_cast<unsigned char>(name[i + k]);
+            shown += std::string("\\x") + hex[b >> 4] + hex[b & 0xF];
+        }
+        i += count - 1;
+        escaped = true;
+    }
+    return escaped ? "'" + shown + "'" : shown;
+}
+
+} // namespace
+
 std::string osgGlyphsData::detail::listColumns(const PointData& data)
 {
     if (data.getNumColumns() == 0)
         return "the frame has no columns";
     std::string list = "available columns:";
     for (const std::string& name : data.getColumnNames())
-        list += " " + name;
+        list += " " + visibleName(name);
     return list;
 }
 

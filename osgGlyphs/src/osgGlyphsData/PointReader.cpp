@@ -1,5 +1,7 @@
 #include <osgGlyphsData/PointReader>
 
+#include <osg/Notify>
+
 #include "PointFormatTable.h"
 #include "readers/Fields.h"
 
@@ -129,17 +131,31 @@ osg::ref_ptr<PointDataset> osgGlyphsData::readPointStream(std::istream& stream, 
     }
 
     const uint64_t size = remainingStreamSize(stream);
-    TextScanner scanner(stream, nameForMessages, size, options.progress);
+    TextScanner scanner(stream, nameForMessages, size, options.progress, options.start.offset,
+                        options.start.line);
     osg::ref_ptr<PointDataset> dataset = new PointDataset;
     dataset->setFormat(reader->name);
     dataset->setSource(nameForMessages);
+    dataset->setEndOfCompleteFrames(options.start);
     try
     {
+        const bool resuming = options.start.offset > 0 || options.start.frame > 0;
         if (scanner.atEnd())
+        {
+            if (resuming || options.growing)
+                return dataset;
             scanner.failAtLine(1, "the file is empty");
-        reader->read(scanner, *dataset);
+        }
+        reader->read(scanner, *dataset, options);
         for (const osg::ref_ptr<PointData>& frame : dataset->getFrames())
             frame->setSource(nameForMessages);
+        for (const std::string& warning : dataset->getWarnings())
+        {
+            if (options.warning)
+                options.warning(warning);
+            else
+                OSG_WARN << warning << std::endl;
+        }
         scanner.reportProgress();
         return dataset;
     }
@@ -183,6 +199,11 @@ osg::ref_ptr<PointDataset> osgGlyphsData::readPointFile(const std::string& path,
     if (!stream)
     {
         error = path + ": cannot open: " + std::strerror(errno);
+        return nullptr;
+    }
+    if (options.start.offset > 0 && !stream.seekg(static_cast<std::streamoff>(options.start.offset)))
+    {
+        error = path + ": cannot seek to byte " + std::to_string(options.start.offset);
         return nullptr;
     }
     return readPointStream(stream, format, path, options, error);

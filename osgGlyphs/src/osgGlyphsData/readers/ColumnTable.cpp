@@ -134,8 +134,8 @@ void ColumnTable::readRows(uint64_t done, uint64_t count, const std::string& sec
     for (uint64_t row = done; row < count; ++row)
     {
         if (!_scanner.nextLine(line))
-            _scanner.fail("unexpected end of file: " + section + " has " + std::to_string(row) + " of " +
-                          std::to_string(count) + " rows");
+            _scanner.failEndOfFile(": " + section + " has " + std::to_string(row) + " of " +
+                                   std::to_string(count) + " rows");
         if (!stopMarker.empty() && startsWith(trim(line), stopMarker))
             _scanner.fail(quote(trim(line)) + " after " + std::to_string(row) + " of " +
                           std::to_string(count) + " rows of " + section);

@@ -48,6 +48,9 @@ public:
      * "element" and "species") is taken or empty. Returns its index. */
     std::size_t addColumn(const std::string& name, Kind kind = Number);
 
+    /** True when a column (or a Species column's "element" or "species") has that name. */
+    bool hasColumn(const std::string& name) const { return _outputNames.count(name) != 0; }
+
     std::size_t getNumColumns() const { return _columns.size(); }
     const std::string& getName(std::size_t column) const { return _columns[column].name; }
     std::size_t getNumRows() const { return _columns.empty() ? _rows : _columns[0].values.size(); }

@@ -60,14 +60,16 @@ bool isSkipped(std::string_view line)
 
 } // namespace
 
-void osgGlyphsData::readers::readCsv(TextScanner& scanner, PointDataset& dataset)
+void osgGlyphsData::readers::readCsv(TextScanner& scanner, PointDataset& dataset,
+                                     const PointReadOptions& options)
 {
     std::string_view line;
     bool found = false;
     while (!found && scanner.nextLine(line))
     {
-        if (scanner.getLineNumber() == 1 && startsWith(line, "\xEF\xBB\xBF"))
-            line.remove_prefix(3); // UTF-8 byte order mark
+        // A UTF-8 byte order mark: at the start of the file, or of a file appended to comments.
+        if (startsWith(line, "\xEF\xBB\xBF"))
+            line.remove_prefix(3);
         found = !isSkipped(line);
     }
     if (!found)
@@ -111,6 +113,5 @@ void osgGlyphsData::readers::readCsv(TextScanner& scanner, PointDataset& dataset
         for (std::size_t c = 0; c < fields.size(); ++c)
             table.appendField(c, fields[c]);
     }
-    osg::ref_ptr<PointData> frame = table.finish();
-    dataset.addFrame(frame.get());
+    addOnlyFrame(scanner, dataset, options, table.finish().get());
 }

@@ -2,6 +2,7 @@
 
 #include "ColumnTable.h"
 #include "Fields.h"
+#include "FrameList.h"
 #include "Readers.h"
 
 #include <algorithm>
@@ -16,6 +17,7 @@ namespace
 // What the items before ITEM: ATOMS said about the coming frame.
 struct FrameHeader
 {
+    uint64_t firstLine = 0;
     bool hasTimestep = false;
     int64_t timestep = 0;
     bool hasCount = false;
@@ -123,36 +125,45 @@ osg::ref_ptr<PointData> readAtoms(TextScanner& scanner, std::string_view names, 
     for (const std::string& name : columns)
         table.addColumn(name, name == "element" ? ColumnTable::Species : ColumnTable::Number);
     const uint64_t minBytes = 2 * std::max<uint64_t>(columns.size(), 1);
-    if (header.count - (legacy ? 1 : 0) > scanner.getMaxItems(minBytes))
-        scanner.failAtLine(header.countLine, "ITEM: NUMBER OF ATOMS is " + std::to_string(header.count) +
-                                                 ", more than the " +
-                                                 std::to_string(scanner.getRemainingBytes()) +
-                                                 " bytes left in the file can hold");
     table.reserve(scanner.boundedReserve(header.count, minBytes));
     if (legacy)
         table.appendRow(first);
-    table.readRows(legacy ? 1 : 0, header.count, "ITEM: ATOMS", "ITEM:");
+    else
+        table.readRows(0, std::min<uint64_t>(header.count, 1), "ITEM: ATOMS", "ITEM:");
+    // The first row fits the columns: a count the rest of the file cannot hold is the count's fault.
+    if (header.count > 1 && header.count - 1 > scanner.getMaxItems(minBytes))
+        scanner.failTooShort(header.countLine, "ITEM: NUMBER OF ATOMS is " + std::to_string(header.count) +
+                                                   ", more than the " +
+                                                   std::to_string(scanner.getRemainingBytes()) +
+                                                   " bytes left in the file can hold");
+    table.readRows(1, header.count, "ITEM: ATOMS", "ITEM:");
     return table.finish();
 }
 
 } // namespace
 
-void osgGlyphsData::readers::readLammps(TextScanner& scanner, PointDataset& dataset)
+namespace
+{
+
+// Reads the items of a dump, a frame at each ITEM: ATOMS.
+void readItems(TextScanner& scanner, FrameList& frames)
 {
     FrameHeader header;
     std::string_view line;
-    while (scanner.nextLine(line))
+    while (!frames.isFull() && scanner.nextLine(line))
     {
         const std::string_view text = trim(line);
         if (text.empty())
             continue;
         if (!startsWith(text, "ITEM:"))
         {
-            scanner.fail(std::string(dataset.getNumFrames() == 0 && !header.hasTimestep
+            scanner.fail(std::string(frames.getFileFrame() == 0 && !header.hasTimestep
                                          ? "not a LAMMPS dump: expected 'ITEM: TIMESTEP', found "
                                          : "expected an 'ITEM:' line, found ") +
                          quote(text));
         }
+        if (header.firstLine == 0)
+            header.firstLine = scanner.getLineNumber();
         const std::string_view item = trim(text.substr(5));
         if (item == "TIMESTEP")
         {
@@ -174,10 +185,10 @@ void osgGlyphsData::readers::readLammps(TextScanner& scanner, PointDataset& data
         {
             osg::ref_ptr<PointData> frame = readAtoms(scanner, item.substr(5), header);
             frame->setTimestep(header.hasTimestep ? header.timestep
-                                                  : static_cast<int64_t>(dataset.getNumFrames()));
+                                                  : static_cast<int64_t>(frames.getFileFrame()));
             if (header.hasBox)
                 frame->setBox(header.box, header.tilt);
-            dataset.addFrame(frame.get());
+            frames.add(frame.get(), header.firstLine);
             header = FrameHeader();
         }
         else
@@ -186,7 +197,23 @@ void osgGlyphsData::readers::readLammps(TextScanner& scanner, PointDataset& data
         }
     }
     if (header.hasTimestep || header.hasCount || header.hasBox)
-        scanner.fail("unexpected end of file: the last timestep has no ITEM: ATOMS section");
-    if (dataset.getNumFrames() == 0)
-        scanner.fail("no ITEM: ATOMS section: not a LAMMPS dump");
+        scanner.failEndOfFile(": the last timestep has no ITEM: ATOMS section");
+}
+
+} // namespace
+
+void osgGlyphsData::readers::readLammps(TextScanner& scanner, PointDataset& dataset,
+                                        const PointReadOptions& options)
+{
+    FrameList frames(scanner, dataset, options);
+    try
+    {
+        readItems(scanner, frames);
+    }
+    catch (const ReadError& error)
+    {
+        if (!frames.leavesOutCutFrame(error))
+            throw;
+    }
+    frames.finish("no ITEM: ATOMS section: not a LAMMPS dump");
 }

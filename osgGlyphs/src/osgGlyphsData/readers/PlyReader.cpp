@@ -189,10 +189,14 @@ void checkSizes(TextScanner& scanner, const Header& header)
         if (each == 0 || element.count == 0)
             continue;
         if (element.count > (remaining - needed) / each)
-            scanner.failAtLine(element.line, "element " + quote(element.name) + " declares " +
-                                                 std::to_string(element.count) + " items of at least " +
-                                                 std::to_string(each) + " bytes, but only " +
-                                                 std::to_string(remaining) + " bytes follow the header");
+            scanner.failAtLine(element.line,
+                               "element " + quote(element.name) + " declares " +
+                                   std::to_string(element.count) + " items of at least " +
+                                   std::to_string(each) + " bytes, but " +
+                                   (remaining == std::numeric_limits<uint64_t>::max()
+                                        ? std::string("with the elements before it that is more than a "
+                                                      "stream can hold (2^64 bytes)")
+                                        : "only " + std::to_string(remaining) + " bytes follow the header"));
         needed += element.count * each;
     }
 }
@@ -355,7 +359,8 @@ void readAsciiBody(TextScanner& scanner, ColumnTable& table, const std::vector<E
 
 } // namespace
 
-void osgGlyphsData::readers::readPly(TextScanner& scanner, PointDataset& dataset)
+void osgGlyphsData::readers::readPly(TextScanner& scanner, PointDataset& dataset,
+                                     const PointReadOptions& options)
 {
     Header header = readHeader(scanner);
     Element* vertex = nullptr;
@@ -401,5 +406,5 @@ void osgGlyphsData::readers::readPly(TextScanner& scanner, PointDataset& dataset
     }
     if (table.getNumColumns() == 0)
         table.addEmptyRows(vertex->count);
-    dataset.addFrame(table.finish().get());
+    addOnlyFrame(scanner, dataset, options, table.finish().get());
 }

@@ -5,19 +5,27 @@
 
 #include "TextScanner.h"
 
-#include <osgGlyphsData/PointData>
+#include <osgGlyphsData/PointReader>
 
 namespace osgGlyphsData
 {
 namespace readers
 {
 
+/** Adds the frame of a single-frame format: its complete frames end where the stream ends. */
+inline void addOnlyFrame(const TextScanner& scanner, PointDataset& dataset, const PointReadOptions& options,
+                         PointData* frame)
+{
+    dataset.addFrame(frame);
+    dataset.setEndOfCompleteFrames({scanner.getOffset(), scanner.getLineNumber(), options.start.frame + 1});
+}
+
 /** Each reader fills dataset with the frames of the scanner's stream, or throws ReadError. */
-void readCsv(TextScanner& scanner, PointDataset& dataset);
-void readXyz(TextScanner& scanner, PointDataset& dataset);
-void readLammps(TextScanner& scanner, PointDataset& dataset);
-void readPly(TextScanner& scanner, PointDataset& dataset);
-void readVtk(TextScanner& scanner, PointDataset& dataset);
+void readCsv(TextScanner& scanner, PointDataset& dataset, const PointReadOptions& options);
+void readXyz(TextScanner& scanner, PointDataset& dataset, const PointReadOptions& options);
+void readLammps(TextScanner& scanner, PointDataset& dataset, const PointReadOptions& options);
+void readPly(TextScanner& scanner, PointDataset& dataset, const PointReadOptions& options);
+void readVtk(TextScanner& scanner, PointDataset& dataset, const PointReadOptions& options);
 
 } // namespace readers
 }

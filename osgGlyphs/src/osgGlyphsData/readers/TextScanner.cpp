@@ -8,12 +8,13 @@
 using namespace osgGlyphsData::readers;
 
 TextScanner::TextScanner(std::istream& in, const std::string& name, uint64_t totalBytes,
-                         const Progress& progress)
+                         const Progress& progress, uint64_t startOffset, uint64_t startLine)
     : _in(in), _name(name), _totalBytes(totalBytes), _progress(progress),
       // A small stream gets a small buffer; a large or unknown one reads a block at a time.
       _blockSize(totalBytes > 0 ? static_cast<std::size_t>(std::min<uint64_t>(totalBytes + 1, BlockSize))
                                 : UnknownSizeBlockSize),
-      _begin(0), _end(0), _bufferOffset(0), _bytesRead(0), _lineNumber(0), _lineOffset(0), _eof(false)
+      _begin(0), _end(0), _startOffset(startOffset), _bufferOffset(startOffset), _bytesRead(0),
+      _lineNumber(startLine), _lineOffset(startOffset), _lineTerminated(true), _eof(false)
 {
 }
 
@@ -21,8 +22,8 @@ uint64_t TextScanner::getRemainingBytes() const
 {
     if (_totalBytes == 0)
         return std::numeric_limits<uint64_t>::max();
-    const uint64_t offset = getOffset();
-    return offset < _totalBytes ? _totalBytes - offset : 0;
+    const uint64_t read = getOffset() - _startOffset;
+    return read < _totalBytes ? _totalBytes - read : 0;
 }
 
 uint64_t TextScanner::getMaxItems(uint64_t minBytesEach) const
@@ -88,6 +89,7 @@ bool TextScanner::nextLine(std::string_view& line)
             ++_lineNumber;
             _lineOffset = getOffset();
             _begin += length + (newline ? 1 : 0);
+            _lineTerminated = newline != nullptr;
             if (length > 0 && start[length - 1] == '\r')
                 --length;
             line = std::string_view(start, length);
@@ -107,7 +109,7 @@ std::string_view TextScanner::requireLine(const std::string& what)
 {
     std::string_view line;
     if (!nextLine(line))
-        fail("unexpected end of file, expected " + what);
+        failEndOfFile(", expected " + what);
     return line;
 }
 
@@ -160,6 +162,18 @@ void TextScanner::failAtLine(uint64_t line, const std::string& what) const
 void TextScanner::fail(const std::string& what) const
 {
     failAtLine(_lineNumber, what);
+}
+
+void TextScanner::failEndOfFile(const std::string& what) const
+{
+    throw ReadError{_name + ":" + std::to_string(_lineNumber == 0 ? 1 : _lineNumber) +
+                        ": unexpected end of file" + what,
+                    true};
+}
+
+void TextScanner::failTooShort(uint64_t line, const std::string& what) const
+{
+    throw ReadError{_name + ":" + std::to_string(line == 0 ? 1 : line) + ": " + what, true};
 }
 
 void TextScanner::failAtByte(uint64_t offset, const std::string& what) const

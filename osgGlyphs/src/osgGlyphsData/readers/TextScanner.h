@@ -21,6 +21,8 @@ namespace readers
 struct ReadError
 {
     std::string message;
+    /** The stream ended where more was expected (a file cut short, or still being written). */
+    bool endOfInput = false;
 };
 
 /** Reads a stream in blocks of BlockSize bytes and hands it out as lines (with their 1-based
@@ -37,8 +39,10 @@ public:
 
     typedef std::function<void(uint64_t bytesRead, uint64_t totalBytes)> Progress;
 
-    /** totalBytes is the size of what is left in the stream, 0 when unknown. */
-    TextScanner(std::istream& in, const std::string& name, uint64_t totalBytes, const Progress& progress);
+    /** totalBytes is the size of what is left in the stream, 0 when unknown. Offsets and line
+     * numbers count on from startOffset and startLine: where the stream starts in its file. */
+    TextScanner(std::istream& in, const std::string& name, uint64_t totalBytes, const Progress& progress,
+                uint64_t startOffset = 0, uint64_t startLine = 0);
 
     const std::string& getName() const { return _name; }
 
@@ -49,8 +53,11 @@ public:
     /** The next line, failing "unexpected end of file, expected <what>" at the end. */
     std::string_view requireLine(const std::string& what);
 
-    /** 1-based number of the line nextLine() returned last; 0 before the first. */
+    /** 1-based number of the line nextLine() returned last; 0 (or startLine) before the first. */
     uint64_t getLineNumber() const { return _lineNumber; }
+
+    /** False when the line nextLine() returned last ended with the stream, without "\n". */
+    bool isLineTerminated() const { return _lineTerminated; }
 
     /** Byte offset of the first byte of that line. */
     uint64_t getLineOffset() const { return _lineOffset; }
@@ -93,6 +100,11 @@ public:
     [[noreturn]] void failAtLine(uint64_t line, const std::string& what) const;
     /** Throws at the line nextLine() returned last (line 1 before any). */
     [[noreturn]] void fail(const std::string& what) const;
+    /** Throws "<name>:<line>: unexpected end of file<what>" as a ReadError of endOfInput. */
+    [[noreturn]] void failEndOfFile(const std::string& what) const;
+    /** Throws "<name>:<line>: <what>" as a ReadError of endOfInput: the rest of the stream is
+     * too short for what that line promised. */
+    [[noreturn]] void failTooShort(uint64_t line, const std::string& what) const;
     /** Throws "<name>: byte <offset>: <what>". */
     [[noreturn]] void failAtByte(uint64_t offset, const std::string& what) const;
 
@@ -110,10 +122,12 @@ private:
     std::vector<char> _buffer;
     std::size_t _begin;
     std::size_t _end;
+    uint64_t _startOffset;
     uint64_t _bufferOffset;
     uint64_t _bytesRead;
     uint64_t _lineNumber;
     uint64_t _lineOffset;
+    bool _lineTerminated;
     bool _eof;
 };
 

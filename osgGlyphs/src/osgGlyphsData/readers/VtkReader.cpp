@@ -6,8 +6,11 @@
 #include "Fields.h"
 #include "Readers.h"
 
-#include <cstring>
+#include <algorithm>
+#include <cmath>
 #include <limits>
+#include <map>
+#include <sstream>
 
 using namespace osgGlyphsData;
 using namespace osgGlyphsData::readers;
@@ -85,9 +88,56 @@ std::string decodeName(std::string_view name)
     return decoded;
 }
 
+/** The magnitudes of a section's floating-point values. Read in the wrong byte order, values
+ * have random exponents: some are subnormal or not finite, and they lie many decades apart. */
+class MagnitudeSpread
+{
+public:
+    void add(double value, ScalarType type)
+    {
+        if (value == 0.0)
+            return;
+        const int kind =
+            type == ScalarType::Float32 ? std::fpclassify(static_cast<float>(value)) : std::fpclassify(value);
+        if (kind != FP_NORMAL)
+        {
+            _abnormal = true;
+            return;
+        }
+        _smallest = std::min(_smallest, std::fabs(value));
+        _largest = std::max(_largest, std::fabs(value));
+    }
+
+    /** Values no data set holds: not finite, subnormal, or more than 40 decades apart. */
+    bool isAbsurd() const { return _abnormal || _largest > 1e40 * _smallest; }
+
+    /** Values as data sets hold them: normal and within 20 decades. */
+    bool isPlausible() const { return !_abnormal && !(_largest > 1e20 * _smallest); }
+
+    /** "<smallest> and <largest>" magnitude, 0 and 0 when every value is zero. */
+    std::string describe() const
+    {
+        std::ostringstream text;
+        text.precision(3);
+        if (_largest > 0.0)
+            text << _smallest << " and " << _largest;
+        else
+            text << "0 and 0";
+        return text.str();
+    }
+
+private:
+    bool _abnormal = false;
+    double _smallest = std::numeric_limits<double>::infinity();
+    double _largest = 0.0;
+};
+
 class VtkReader
 {
 public:
+    /** Arrays of more components per tuple are refused (a header of garbage, usually). */
+    static constexpr uint64_t MaxComponents = 1024;
+
     VtkReader(TextScanner& scanner) : _scanner(scanner), _table(scanner) {}
 
     osg::ref_ptr<PointData> read()
@@ -138,12 +188,26 @@ private:
         return true;
     }
 
-    // Whether the next line starts with a keyword (looked at without reading it).
-    bool nextLineStartsWith(const char* keyword)
+    // The next word in the file, in lower case, looked at without reading it: VTK reads keywords
+    // in any case and after any blanks. Words beyond the next PeekBytes bytes are not seen.
+    std::string peekWord()
     {
-        const std::size_t length = std::strlen(keyword);
+        static const std::size_t PeekBytes = 256;
+        std::size_t length = PeekBytes;
         const char* bytes = _scanner.peekBytes(length);
-        return bytes && std::memcmp(bytes, keyword, length) == 0;
+        if (!bytes)
+        {
+            length = _scanner.getAvailableBytes();
+            bytes = _scanner.peekBytes(length);
+        }
+        const char* end = bytes + length;
+        const char* word = bytes;
+        while (word < end && (isBlank(*word) || *word == '\n'))
+            ++word;
+        const char* stop = word;
+        while (stop < end && !isBlank(*stop) && *stop != '\n')
+            ++stop;
+        return toLower(std::string_view(word, static_cast<std::size_t>(stop - word)));
     }
 
     void expectWords(std::size_t minimum, std::size_t maximum, const char* form)
@@ -176,8 +240,6 @@ private:
         _section = section;
         const bool store = !names.empty();
         const uint64_t bytesEach = _binary ? scalarSize(valueType) : 2;
-        if (components == 0 || components > 1024)
-            _scanner.fail(_section + ": " + std::to_string(components) + " components per tuple");
         if (tuples > _scanner.getMaxItems(bytesEach * components))
             _scanner.fail(_section + ": " + std::to_string(tuples) + " tuples of " +
                           std::to_string(components) + " values are more than the " +
@@ -196,21 +258,13 @@ private:
                 _scanner.failAtByte(_scanner.getOffset(), "unexpected end of file in " + _section);
             return;
         }
+        if (_binary)
+        {
+            readBinaryValues(columns, total, valueType, binaryScale);
+            return;
+        }
         for (uint64_t i = 0; i < total; ++i)
         {
-            if (_binary)
-            {
-                const uint64_t offset = _scanner.getOffset();
-                const char* bytes = _scanner.peekBytes(bytesEach);
-                if (!bytes)
-                    _scanner.failAtByte(offset, "unexpected end of file in " + _section + ": " +
-                                                    std::to_string(i) + " of " + std::to_string(total) +
-                                                    " values");
-                _table.appendValue(columns[i % components],
-                                   binaryScale * decodeScalar(bytes, valueType, true), offset);
-                _scanner.consume(bytesEach);
-                continue;
-            }
             const std::string_view token = nextToken(i, total);
             double value = 0.0;
             if (store)
@@ -220,14 +274,75 @@ private:
         }
     }
 
+    // Binary values into the columns, a component each in turn. Legacy VTK binary data is
+    // big-endian; floating-point data that make sense only in the other byte order fail.
+    void readBinaryValues(const std::vector<std::size_t>& columns, uint64_t total, ScalarType valueType,
+                          double binaryScale)
+    {
+        const std::size_t bytesEach = scalarSize(valueType);
+        const uint64_t start = _scanner.getOffset();
+        MagnitudeSpread bigEndian, littleEndian;
+        for (uint64_t i = 0; i < total; ++i)
+        {
+            const uint64_t offset = _scanner.getOffset();
+            const char* bytes = _scanner.peekBytes(bytesEach);
+            if (!bytes)
+                _scanner.failAtByte(offset, "unexpected end of file in " + _section + ": " +
+                                                std::to_string(i) + " of " + std::to_string(total) +
+                                                " values");
+            const double value = binaryScale * decodeScalar(bytes, valueType, true);
+            if (!isIntegerType(valueType))
+            {
+                bigEndian.add(value, valueType);
+                littleEndian.add(decodeScalar(bytes, valueType, false), valueType);
+                if (!std::isfinite(value) && littleEndian.isPlausible())
+                    failLittleEndian(start, littleEndian);
+            }
+            _table.appendValue(columns[i % columns.size()], value, offset);
+            _scanner.consume(bytesEach);
+        }
+        if (bigEndian.isAbsurd() && littleEndian.isPlausible())
+            failLittleEndian(start, littleEndian);
+    }
+
+    [[noreturn]] void failLittleEndian(uint64_t offset, const MagnitudeSpread& littleEndian) const
+    {
+        _scanner.failAtByte(offset, _section +
+                                        ": the values look little-endian: read big-endian, as legacy VTK "
+                                        "binary data is, they are not finite, subnormal or more than " +
+                                        "1e40 apart; read little-endian they lie within " +
+                                        littleEndian.describe() + ". Write the file big-endian");
+    }
+
+    // The columns of an array of so many components: none in CELL_DATA, whose values are read past.
+    // A name that the points or an earlier array took gets a suffix: SCALARS x becomes x_2.
+    std::vector<std::string> arrayColumns(const std::string& section, const std::string& name,
+                                          uint64_t components)
+    {
+        if (components == 0 || components > MaxComponents)
+            _scanner.fail(section + ": " + std::to_string(components) + " components per tuple (at most " +
+                          std::to_string(MaxComponents) + ")");
+        if (_mode != Points)
+            return {};
+        const std::size_t count = static_cast<std::size_t>(components);
+        std::vector<std::string> names = componentNames(name, count);
+        int& suffix = _nextSuffix[name];
+        while (std::any_of(names.begin(), names.end(),
+                           [this](const std::string& column) { return _table.hasColumn(column); }))
+        {
+            suffix = std::max(suffix, 2);
+            names = componentNames(name + "_" + std::to_string(suffix++), count);
+        }
+        return names;
+    }
+
     // Values of a POINT_DATA attribute are kept, of CELL_DATA read past.
     void readAttribute(const std::string& name, uint64_t components, ScalarType valueType,
                        double binaryScale = 1.0)
     {
-        const std::vector<std::string> names =
-            _mode == Points ? componentNames(name, static_cast<std::size_t>(components))
-                            : std::vector<std::string>();
-        readValues(_words[0] + " " + name, attributeTuples(), components, valueType, names, binaryScale);
+        const std::string section = _words[0] + " " + name;
+        readValues(section, attributeTuples(), components, valueType, arrayColumns(section, name, components),
+                   binaryScale);
     }
 
     std::string_view nextToken(uint64_t index, uint64_t total)
@@ -264,7 +379,7 @@ private:
         expectWords(3, 3, "<keyword> <count> <size>");
         const uint64_t cells = count(1);
         const uint64_t size = count(2);
-        if (nextLineStartsWith("OFFSETS"))
+        if (peekWord() == "offsets")
         {
             // File version 5: offsets and connectivity arrays with their types.
             for (const char* keyword : {"OFFSETS", "CONNECTIVITY"})
@@ -304,10 +419,8 @@ private:
             if (_mode == Points && tuples != _numPoints)
                 _scanner.fail("FIELD array " + quote(name) + " has " + std::to_string(tuples) +
                               " tuples, POINT_DATA has " + std::to_string(_numPoints));
-            const std::vector<std::string> names =
-                _mode == Points ? componentNames(name, static_cast<std::size_t>(components))
-                                : std::vector<std::string>();
-            readValues("FIELD array " + name, tuples, components, type(3), names);
+            const std::string section = "FIELD array " + name;
+            readValues(section, tuples, components, type(3), arrayColumns(section, name, components));
         }
     }
 
@@ -386,9 +499,10 @@ private:
             const uint64_t components = _words.size() == 4 ? count(3) : 1;
             const ScalarType valueType = type(2);
             const std::string name = decodeName(_words[1]);
-            if (nextLineStartsWith("LOOKUP_TABLE"))
+            if (peekWord() == "lookup_table")
             {
                 nextKeywordLine();
+                expectWords(2, 2, "LOOKUP_TABLE <name>");
                 _words[0] = "SCALARS";
             }
             readAttribute(name, components, valueType);
@@ -432,6 +546,7 @@ private:
     uint64_t _numPoints = 0;
     uint64_t _numCells = 0;
     Mode _mode = Global;
+    std::map<std::string, int> _nextSuffix; // of array names taken: x -> 2 for x_2
     std::vector<std::string> _words;
     std::vector<std::string_view> _fields;
     std::string _keyword;
@@ -442,8 +557,9 @@ private:
 
 } // namespace
 
-void osgGlyphsData::readers::readVtk(TextScanner& scanner, PointDataset& dataset)
+void osgGlyphsData::readers::readVtk(TextScanner& scanner, PointDataset& dataset,
+                                     const PointReadOptions& options)
 {
     VtkReader reader(scanner);
-    dataset.addFrame(reader.read().get());
+    addOnlyFrame(scanner, dataset, options, reader.read().get());
 }

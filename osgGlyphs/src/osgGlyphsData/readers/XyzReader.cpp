@@ -2,8 +2,10 @@
 
 #include "ColumnTable.h"
 #include "Fields.h"
+#include "FrameList.h"
 #include "Readers.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace osgGlyphsData;
@@ -134,7 +136,7 @@ bool parseLattice(TextScanner& scanner, const std::string& lattice, osg::Boundin
     return true;
 }
 
-osg::ref_ptr<PointData> readFrame(TextScanner& scanner, uint64_t count, std::size_t frameIndex)
+osg::ref_ptr<PointData> readFrame(TextScanner& scanner, uint64_t count, uint64_t frameIndex)
 {
     const uint64_t countLine = scanner.getLineNumber();
     const std::vector<KeyValue> pairs =
@@ -169,14 +171,18 @@ osg::ref_ptr<PointData> readFrame(TextScanner& scanner, uint64_t count, std::siz
     }
 
     const uint64_t minBytes = 2 * std::max<uint64_t>(table.getNumColumns(), 1);
-    if (count - (hasFirst ? 1 : 0) > scanner.getMaxItems(minBytes))
-        scanner.failAtLine(countLine, "the atom count " + std::to_string(count) + " is more than the " +
-                                          std::to_string(scanner.getRemainingBytes()) +
-                                          " bytes left in the file can hold");
+    const std::string section = "frame " + std::to_string(frameIndex + 1);
     table.reserve(scanner.boundedReserve(count, minBytes));
     if (hasFirst)
         table.appendRow(first);
-    table.readRows(hasFirst ? 1 : 0, count, "frame " + std::to_string(frameIndex + 1));
+    else
+        table.readRows(0, std::min<uint64_t>(count, 1), section);
+    // The first row fits the columns: a count the rest of the file cannot hold is the count's fault.
+    if (count > 1 && count - 1 > scanner.getMaxItems(minBytes))
+        scanner.failTooShort(countLine, "the atom count " + std::to_string(count) + " is more than the " +
+                                            std::to_string(scanner.getRemainingBytes()) +
+                                            " bytes left in the file can hold");
+    table.readRows(1, count, section);
 
     osg::ref_ptr<PointData> frame = table.finish();
     frame->setTimestep(static_cast<int64_t>(frameIndex));
@@ -194,21 +200,32 @@ osg::ref_ptr<PointData> readFrame(TextScanner& scanner, uint64_t count, std::siz
 
 } // namespace
 
-void osgGlyphsData::readers::readXyz(TextScanner& scanner, PointDataset& dataset)
+void osgGlyphsData::readers::readXyz(TextScanner& scanner, PointDataset& dataset,
+                                     const PointReadOptions& options)
 {
+    FrameList frames(scanner, dataset, options);
     std::string_view line;
-    while (scanner.nextLine(line))
+    try
     {
-        const std::string_view text = trim(line);
-        if (text.empty())
-            continue; // blank lines between frames and at the end
-        uint64_t count = 0;
-        if (!parseUInt64(text, count))
-            scanner.fail(std::string(dataset.getNumFrames() == 0 ? "not an XYZ file: " : "") +
-                         "expected the number of atoms of frame " +
-                         std::to_string(dataset.getNumFrames() + 1) + ", found " + quote(text));
-        dataset.addFrame(readFrame(scanner, count, dataset.getNumFrames()).get());
+        while (!frames.isFull() && scanner.nextLine(line))
+        {
+            const std::string_view text = trim(line);
+            if (text.empty())
+                continue; // blank lines between frames and at the end
+            uint64_t count = 0;
+            const uint64_t frame = frames.getFileFrame();
+            if (!parseUInt64(text, count))
+                scanner.fail(std::string(frame == 0 ? "not an XYZ file: " : "") +
+                             "expected the number of atoms of frame " + std::to_string(frame + 1) +
+                             ", found " + quote(text));
+            const uint64_t countLine = scanner.getLineNumber();
+            frames.add(readFrame(scanner, count, frame).get(), countLine);
+        }
     }
-    if (dataset.getNumFrames() == 0)
-        scanner.fail("no atoms: the file has only blank lines");
+    catch (const ReadError& error)
+    {
+        if (!frames.leavesOutCutFrame(error))
+            throw;
+    }
+    frames.finish("no atoms: the file has only blank lines");
 }

@@ -5,6 +5,7 @@
 #include <osgGlyphsData/PointReader>
 #include <osgGlyphsPaper/Techniques>
 
+#include <osg/Notify>
 #include <osg/Sequence>
 #include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
@@ -24,12 +25,24 @@ const char* const PSEUDO_EXTENSION = "glyphs";
 /** Seconds each frame of a multi-frame file is shown. */
 const double FRAME_SECONDS = 0.1;
 
+/** Without a frame option, files of at most this many frames play them all; longer ones show the
+ * first: every frame is a cloud, and a dump of 200,000 small frames would take gigabytes. */
+const std::size_t MAX_DEFAULT_SEQUENCE_FRAMES = 1000;
+
+/** Which frames become the scene. */
+enum class FrameChoice
+{
+    Default, ///< all, up to MAX_DEFAULT_SEQUENCE_FRAMES; else the first
+    All,     ///< frame=all
+    One      ///< frame=<n>
+};
+
 /** What an option string asks for beyond the column mapping. */
 struct ReadSettings
 {
     osgGlyphsData::GlyphMappingOptions mapping;
     std::string format;
-    bool allFrames = true;
+    FrameChoice frames = FrameChoice::Default;
     unsigned long frame = 0;
 };
 
@@ -37,14 +50,26 @@ bool parseFrame(const std::string& value, ReadSettings& settings)
 {
     if (value == "all")
     {
-        settings.allFrames = true;
+        settings.frames = FrameChoice::All;
         return true;
     }
     char* end = nullptr;
     errno = 0;
     settings.frame = std::strtoul(value.c_str(), &end, 10);
-    settings.allFrames = false;
+    settings.frames = FrameChoice::One;
     return !value.empty() && value[0] != '-' && end == value.c_str() + value.size() && errno == 0;
+}
+
+/** The reading of as many frames as the settings need. */
+osgGlyphsData::PointReadOptions readOptionsFor(const ReadSettings& settings)
+{
+    osgGlyphsData::PointReadOptions options;
+    options.format = settings.format;
+    if (settings.frames == FrameChoice::Default)
+        options.maxFrames = MAX_DEFAULT_SEQUENCE_FRAMES + 1; // one more tells a longer file
+    else if (settings.frames == FrameChoice::One)
+        options.maxFrames = static_cast<uint64_t>(settings.frame) + 1;
+    return options;
 }
 
 /** Reads "key=value key flag ..."; keys of other plugins are left to them. */
@@ -80,17 +105,25 @@ bool parseOptionString(const std::string& text, ReadSettings& settings, std::str
 osg::ref_ptr<osg::Node> createScene(const osgGlyphsData::PointDataset& dataset, const ReadSettings& settings,
                                     std::string& error)
 {
-    const std::size_t first = settings.allFrames ? 0 : settings.frame;
+    const std::size_t first = settings.frames == FrameChoice::One ? settings.frame : 0;
     if (first >= dataset.getNumFrames())
     {
         error = dataset.getSource() + ": frame " + std::to_string(first) + " asked for, the file has " +
                 std::to_string(dataset.getNumFrames());
         return nullptr;
     }
+    std::size_t last = settings.frames == FrameChoice::One ? first + 1 : dataset.getNumFrames();
+    if (settings.frames == FrameChoice::Default && last > MAX_DEFAULT_SEQUENCE_FRAMES)
+    {
+        OSG_WARN << "osgdb_glyphs: " << dataset.getSource() << " has more than "
+                 << MAX_DEFAULT_SEQUENCE_FRAMES
+                 << " frames: showing frame 0 (frame=all plays them all, frame=<n> shows another)"
+                 << std::endl;
+        last = 1;
+    }
     osgGlyphsData::GlyphMapper mapper(settings.mapping);
     if (!mapper.prepare(dataset, first, error))
         return nullptr;
-    const std::size_t last = settings.allFrames ? dataset.getNumFrames() : first + 1;
     if (last - first == 1)
         return mapper.createCloud(*dataset.getFrame(first), error);
 
@@ -129,7 +162,9 @@ public:
         }
         supportsOption("format=<name>", "Read as " + formats + ", whatever the extension");
         supportsOption("frame=<n>|all",
-                       "One frame of a multi-frame file, or all of them in a loop (default)");
+                       "One frame of a multi-frame file, or all of them in a loop (default: all "
+                       "of a file of at most " +
+                           std::to_string(MAX_DEFAULT_SEQUENCE_FRAMES) + " frames, else frame 0)");
         supportsOption("glyph=<shape>", "sphere (default), cone, arrow or cylinder");
         supportsOption("color=<column>|speed", "Colour through the colour map by a column (also color-by)");
         supportsOption("colormap=<name>|<file>", "viridis (default), magma, cividis, coolwarm, grayscale");
@@ -164,8 +199,7 @@ public:
         std::string error;
         if (!parseOptionString(getOptionString(options), settings, error))
             return failure(error);
-        osgGlyphsData::PointReadOptions readOptions;
-        readOptions.format = settings.format;
+        const osgGlyphsData::PointReadOptions readOptions = readOptionsFor(settings);
         if (readOptions.format.empty() && osgGlyphsData::formatFromExtension(path).empty())
             return failure(path + ": no point format for this extension; give one with format=<name>");
         return toScene(osgGlyphsData::readPointFile(path, readOptions, error), settings, error);
@@ -180,7 +214,7 @@ public:
         if (settings.format.empty())
             return ReadResult::FILE_NOT_HANDLED; // a stream has no extension to tell its format
         return toScene(osgGlyphsData::readPointStream(stream, settings.format, "stream",
-                                                      osgGlyphsData::PointReadOptions(), error),
+                                                      readOptionsFor(settings), error),
                        settings, error);
     }
 

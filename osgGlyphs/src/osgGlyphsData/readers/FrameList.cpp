@@ -1,0 +1,68 @@
+#include "FrameList.h"
+
+using namespace osgGlyphsData;
+using namespace osgGlyphsData::readers;
+
+FrameList::FrameList(TextScanner& scanner, PointDataset& dataset, const PointReadOptions& options)
+    : _scanner(scanner), _dataset(dataset), _options(options), _fileFrame(options.start.frame)
+{
+    _dataset.setEndOfCompleteFrames(options.start);
+}
+
+void FrameList::add(PointData* frame, uint64_t firstLine)
+{
+    const uint64_t number = _fileFrame + 1;
+    if (_options.growing && !_scanner.isLineTerminated() && _scanner.atEnd())
+    {
+        _dataset.addWarning(_scanner.getName() + ":" + std::to_string(_scanner.getLineNumber()) +
+                            ": the last line has no end yet: frame " + std::to_string(number) +
+                            " is incomplete and left out");
+        return;
+    }
+    ++_fileFrame;
+    _dataset.setEndOfCompleteFrames({_scanner.getOffset(), _scanner.getLineNumber(), _fileFrame});
+    if (frame->getNumPoints() > 0)
+    {
+        _dataset.addFrame(frame);
+        return;
+    }
+    if (_emptyFrames++ == 0)
+    {
+        _firstEmptyFrame = number;
+        _firstEmptyLine = firstLine;
+    }
+}
+
+bool FrameList::leavesOutCutFrame(const ReadError& error)
+{
+    const bool cut = error.endOfInput || (!_scanner.isLineTerminated() && _scanner.atEnd());
+    if (!cut || (_dataset.getNumFrames() == 0 && _emptyFrames == 0 && !mayBeEmpty()))
+        return false;
+    _dataset.addWarning(error.message + "; frame " + std::to_string(_fileFrame + 1) +
+                        " is incomplete and left out");
+    return true;
+}
+
+void FrameList::finish(const std::string& noFrames)
+{
+    const std::string where = _scanner.getName() + ":" + std::to_string(_firstEmptyLine) + ": ";
+    const std::string first = "frame " + std::to_string(_firstEmptyFrame);
+    if (_dataset.getNumFrames() == 0 && !mayBeEmpty())
+    {
+        if (_emptyFrames == 0)
+            _scanner.fail(noFrames);
+        throw ReadError{where + "no atoms: " +
+                        (_emptyFrames == 1 ? first + " is empty"
+                                           : "all " + std::to_string(_emptyFrames) + " frames are empty")};
+    }
+    if (_emptyFrames == 1)
+        _dataset.addWarning(where + first + " has no atoms and is left out");
+    else if (_emptyFrames > 1)
+        _dataset.addWarning(where + std::to_string(_emptyFrames) +
+                            " frames without atoms left out, the first " + first);
+}
+
+bool FrameList::mayBeEmpty() const
+{
+    return _options.growing || _options.start.frame > 0 || _options.start.offset > 0;
+}
