@@ -14,6 +14,7 @@
 #include <osgUtil/Optimizer>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 
@@ -348,6 +349,32 @@ TEST_F(GlyphCloudData, AShaderFileOnTheDataPathOverridesTheEmbeddedCopy)
 
     EXPECT_TRUE(colorNear(overridden, 80, 60, magenta, 0));
     EXPECT_TRUE(colorNear(restored, 80, 60, osg::Vec4ub(0, 255, 0, 255), 0));
+}
+
+TEST_F(GlyphCloudData, ShaderFilesInTheWorkingFolderAreIgnored)
+{
+    // A stray lighting.glsl, by its bare name and under osgGlyphs/, where the program runs.
+    const std::string directory = outputPath("stray-shaders");
+    osgDB::makeDirectory(directory + "/osgGlyphs");
+    const std::string magenta =
+        "uniform vec3 osgGlyphs_material;\n"
+        "vec3 shade(vec3 base, vec3 position, vec3 normal, vec3 toEye) { return vec3(1.0, 0.0, 1.0); }\n";
+    std::ofstream(directory + "/lighting.glsl") << magenta;
+    std::ofstream(directory + "/osgGlyphs/lighting.glsl") << magenta;
+    const std::string builtIn = osgGlyphs::readShaderSource("osgGlyphs/lighting.glsl");
+    osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{osg::Vec3(), 1.0f, osg::Vec4ub(0, 255, 0, 255)}});
+    osg::ref_ptr<osg::Node> scene = group({cloud.get()});
+
+    const std::filesystem::path workingFolder = std::filesystem::current_path();
+    std::filesystem::current_path(directory);
+    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+    const std::string read = osgGlyphs::readShaderSource("osgGlyphs/lighting.glsl");
+    const Frame frame = renderer.render(scene.get());
+    std::filesystem::current_path(workingFolder);
+    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+
+    EXPECT_EQ(read, builtIn);
+    EXPECT_TRUE(colorNear(frame, 80, 60, osg::Vec4ub(0, 255, 0, 255), 0));
 }
 
 TEST_F(GlyphCloudData, LitSceneMatchesBaseline)
