@@ -84,7 +84,14 @@ void osgGlyphs::detail::registerEmbeddedResources(const std::string& folder, Emb
 
 std::string osgGlyphs::detail::readResource(const std::string& name)
 {
+    std::string origin;
+    return readResource(name, origin);
+}
+
+std::string osgGlyphs::detail::readResource(const std::string& name, std::string& origin)
+{
     const std::string path = findResourceFile(name);
+    origin = name;
     if (!path.empty())
     {
         osgDB::ifstream file(path.c_str());
@@ -93,6 +100,7 @@ std::string osgGlyphs::detail::readResource(const std::string& name)
         if (file)
         {
             OSG_INFO << "osgGlyphs: using " << path << " instead of the built-in " << name << std::endl;
+            origin = path;
             return text.str();
         }
         OSG_WARN << "osgGlyphs: cannot read " << path << "; using the built-in " << name << std::endl;

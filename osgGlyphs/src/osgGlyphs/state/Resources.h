@@ -24,6 +24,9 @@ void registerEmbeddedResources(const std::string& folder, const char* (*lookup)(
  * the embedded copy, else an empty string. Never a file of the working folder. */
 std::string readResource(const std::string& name);
 
+/** readResource(), and where the text came from: the file read, or the name for an embedded copy. */
+std::string readResource(const std::string& name, std::string& origin);
+
 }
 }
 
