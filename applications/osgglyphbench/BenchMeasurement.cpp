@@ -3,6 +3,7 @@
 #include "BenchText.h"
 
 #include <osgGlyphs/GlyphCloud>
+#include <osgGlyphs/GlyphStateCache>
 #include <osgGlyphsData/RandomCloud>
 #include <osgGlyphsHeadless/OffscreenViewer>
 
@@ -152,14 +153,22 @@ osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> createViewer(const BenchSetting
     return viewer;
 }
 
-/** Times one warm-up frame and then settings.frames frames; false without a context. */
+/** Times one warm-up frame and then settings.frames frames; false with a one-line error without
+ * a context or when a glyph program failed to compile or link in the warm-up frame. */
 bool measure(const BenchSettings& settings, osg::Node* scene, double& firstFrameMs,
-             std::vector<double>& frameMs, osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer>& viewer)
+             std::vector<double>& frameMs, osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer>& viewer,
+             std::string& error)
 {
     viewer = createViewer(settings, scene);
     if (!viewer)
+    {
+        error = "no headless GL context";
         return false;
+    }
     firstFrameMs = timeFrame(*viewer, 0);
+    error = osgGlyphs::GlyphStateCache::instance()->getProgramError();
+    if (!error.empty())
+        return false;
     frameMs.clear();
     for (unsigned int frame = 1; frame <= settings.frames; ++frame)
         frameMs.push_back(timeFrame(*viewer, frame));
@@ -169,7 +178,7 @@ bool measure(const BenchSettings& settings, osg::Node* scene, double& firstFrame
 }
 
 bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings, BenchResult& result,
-                 std::string& renderer)
+                 std::string& renderer, std::string& error)
 {
     result = BenchResult{c.technique, c.shape, c.n, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, radius, c.culling};
     osg::ref_ptr<osg::Geode> scene = new osg::Geode;
@@ -177,7 +186,7 @@ bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings
     scene->addDrawable(cloud.get());
     std::vector<double> frameMs;
     osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer;
-    if (!measure(settings, scene.get(), result.firstFrameMs, frameMs, viewer))
+    if (!measure(settings, scene.get(), result.firstFrameMs, frameMs, viewer, error))
         return false;
     result.msMedian = median(frameMs);
     result.msMin = *std::min_element(frameMs.begin(), frameMs.end());
@@ -198,7 +207,8 @@ void printFrameOverhead(const BenchSettings& settings)
     std::vector<double> frameMs;
     osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer;
     osg::ref_ptr<osg::Group> empty = new osg::Group;
-    if (measure(settings, empty.get(), firstFrameMs, frameMs, viewer))
+    std::string error;
+    if (measure(settings, empty.get(), firstFrameMs, frameMs, viewer, error))
         std::cout << "Empty frame (clear + colour read-back, " << settings.width << "x" << settings.height
                   << "): median " << formatMs(median(frameMs)) << " ms, with "
                   << viewer->getFrameCapture()->getGLRenderer() << std::endl;

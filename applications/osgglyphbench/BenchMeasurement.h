@@ -40,10 +40,11 @@ struct BenchResult
 };
 
 /** Measures one case, a random cloud of glyphs of this radius, in a fresh headless viewer: one
- * warm-up frame and then settings.frames timed frames. False without a headless context. The
- * renderer string is filled in. */
+ * warm-up frame and then settings.frames timed frames. The renderer string is filled in. False
+ * with a one-line error without a headless context, or when a glyph program fails to compile or
+ * link (osgGlyphs::GlyphStateCache::getProgramError()). */
 bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings, BenchResult& result,
-                 std::string& renderer);
+                 std::string& renderer, std::string& error);
 
 /** Prints the cost of a frame that draws nothing: clearing and reading the colour buffer back. */
 void printFrameOverhead(const BenchSettings& settings);

@@ -106,7 +106,8 @@ bool openCsv(const BenchSettings& settings, std::ofstream& csv)
     return true;
 }
 
-/** Measures the cases in turn, skipping those over --max-ms; false without a headless context. */
+/** Measures the cases in turn, skipping those over --max-ms; false, with the error printed, when
+ * a case cannot be measured (no headless context, a glyph program that fails). */
 bool measureCases(const std::vector<BenchCase>& cases, const BenchSettings& settings, std::ofstream& csv,
                   std::vector<BenchResult>& results, std::string& renderer)
 {
@@ -120,10 +121,11 @@ bool measureCases(const std::vector<BenchCase>& cases, const BenchSettings& sett
             continue;
         }
         BenchResult result;
-        const float radius = getCaseRadius(c, settings, radii);
-        if (radius <= 0.0f || !measureCase(c, radius, settings, result, renderer))
+        std::string error;
+        const float radius = getCaseRadius(c, settings, radii, error);
+        if (radius <= 0.0f || !measureCase(c, radius, settings, result, renderer, error))
         {
-            std::cerr << PROGRAM << ": error: no headless GL context" << std::endl;
+            std::cerr << PROGRAM << ": error: " << error << std::endl;
             return false;
         }
         printProgress(result, i + 1, cases.size());

@@ -9,6 +9,7 @@
 #include "BenchOptions.h"
 #include "BenchRun.h"
 
+#include <osgGlyphs/ProgramErrorFilter>
 #include <osgGlyphsPaper/Techniques>
 
 #include <osg/ArgumentParser>
@@ -18,6 +19,8 @@
 int main(int argc, char** argv)
 {
     osgGlyphsPaper::registerTechniques(); // the paper's techniques are the benchmark's references
+    // A glyph program that fails is reported in one line, by measureCases.
+    osg::setNotifyHandler(new osgGlyphs::ProgramErrorFilter(osg::getNotifyHandler()));
     osg::ArgumentParser arguments(&argc, argv);
     osg::ApplicationUsage* usage = arguments.getApplicationUsage();
     usage->setApplicationName(PROGRAM);

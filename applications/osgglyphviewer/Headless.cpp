@@ -2,6 +2,7 @@
 
 #include "ViewerCamera.h"
 
+#include <osgGlyphs/GlyphStateCache>
 #include <osgGlyphsHeadless/DepthImage>
 #include <osgGlyphsHeadless/OffscreenViewer>
 
@@ -81,10 +82,15 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
         const auto frameStart = std::chrono::steady_clock::now();
         viewer->frame();
         times.push_back(millisecondsSince(frameStart));
+        std::string error = osgGlyphs::GlyphStateCache::instance()->getProgramError();
+        if (!error.empty())
+        {
+            std::cerr << PROGRAM << ": " << error << std::endl;
+            return 1;
+        }
         if (frame > 0)
             continue;
 
-        std::string error;
         if (!writeOutputs(*viewer, sceneCapture.get(), options, error))
         {
             std::cerr << PROGRAM << ": " << error << std::endl;

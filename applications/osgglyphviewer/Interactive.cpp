@@ -19,14 +19,14 @@ namespace
 /** The screenshots of key c: osgglyphviewer-screenshot_<context>_<n>.png in the working folder. */
 const char* const SCREENSHOT_PREFIX = "osgglyphviewer-screenshot";
 
-/** The standard handlers, in the order they see events. The viewer's own handler goes before
- * the StateSetManipulator, so that l toggles both glyph and OpenGL lighting. */
+/** The viewer's keys and the standard handlers, in the order they see events. The viewer's own
+ * handler goes before the StateSetManipulator, so that l toggles both glyph and OpenGL lighting. */
 std::vector<osg::ref_ptr<osgGA::GUIEventHandler>>
-createHandlers(ViewerScene* scene, osg::StateSet* cameraState, osg::ApplicationUsage* usage)
+createHandlers(ViewerEventHandler* keys, osg::StateSet* cameraState, osg::ApplicationUsage* usage)
 {
     osg::ref_ptr<osgViewer::ScreenCaptureHandler> capture = new osgViewer::ScreenCaptureHandler(
         new osgViewer::ScreenCaptureHandler::WriteToFile(SCREENSHOT_PREFIX, "png"));
-    return {new ViewerEventHandler(scene),
+    return {keys,
             new osgGA::StateSetManipulator(cameraState),
             new osgViewer::StatsHandler,
             new osgViewer::WindowSizeHandler,
@@ -39,7 +39,7 @@ createHandlers(ViewerScene* scene, osg::StateSet* cameraState, osg::ApplicationU
 void describeViewerKeys(osg::ApplicationUsage& usage)
 {
     osg::ref_ptr<osg::StateSet> stateSet = new osg::StateSet;
-    for (const auto& handler : createHandlers(nullptr, stateSet.get(), nullptr))
+    for (const auto& handler : createHandlers(new ViewerEventHandler(nullptr), stateSet.get(), nullptr))
         handler->getUsage(usage);
     osg::ref_ptr<osgGA::TrackballManipulator> trackball = new osgGA::TrackballManipulator;
     trackball->getUsage(usage);
@@ -75,7 +75,8 @@ int runInteractive(ViewerScene& scene, const ViewerOptions& options, osg::Applic
     camera->setProjectionMatrixAsPerspective(options.fov, aspect, 1.0, 1000.0);
     scene.addLegend(camera, options.background);
     viewer->setSceneData(scene.getRoot());
-    for (const auto& handler : createHandlers(&scene, camera->getOrCreateStateSet(), usage))
+    osg::ref_ptr<ViewerEventHandler> keys = new ViewerEventHandler(&scene);
+    for (const auto& handler : createHandlers(keys.get(), camera->getOrCreateStateSet(), usage))
         viewer->addEventHandler(handler.get());
 
     const CameraView home = options.hasCamera ? options.camera : scene.getHomeView(options.fov, aspect);
@@ -85,7 +86,10 @@ int runInteractive(ViewerScene& scene, const ViewerOptions& options, osg::Applic
     viewer->setCameraManipulator(trackball.get());
 
     if (options.frames == 0)
-        return viewer->run();
+    {
+        viewer->run();
+        return keys->getExitCode();
+    }
 
     viewer->realize();
     std::vector<double> times;
@@ -98,6 +102,8 @@ int runInteractive(ViewerScene& scene, const ViewerOptions& options, osg::Applic
         times.push_back(
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
+    if (keys->getExitCode() != 0)
+        return keys->getExitCode();
     std::cout << formatFrameTimes(times) << std::endl;
     return 0;
 }

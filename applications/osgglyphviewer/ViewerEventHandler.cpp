@@ -1,11 +1,14 @@
 #include "ViewerEventHandler.h"
 
 #include <osgGlyphs/GlyphStateCache>
+#include <osgViewer/View>
 
 #include <iostream>
 
 bool ViewerEventHandler::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter& aa)
 {
+    if (ea.getEventType() == osgGA::GUIEventAdapter::FRAME)
+        checkPrograms(aa);
     if (ea.getHandled() || ea.getEventType() != osgGA::GUIEventAdapter::KEYDOWN)
         return false;
     switch (ea.getKey())
@@ -25,12 +28,28 @@ bool ViewerEventHandler::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActi
         return true;
     case 'r':
         osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+        _reloaded = true;
+        _reportedError.clear();
         std::cout << PROGRAM << ": reloaded the glyph shaders" << std::endl;
         aa.requestRedraw();
         return true;
     default:
         return false;
     }
+}
+
+void ViewerEventHandler::checkPrograms(osgGA::GUIActionAdapter& aa)
+{
+    const std::string error = osgGlyphs::GlyphStateCache::instance()->getProgramError();
+    if (error.empty() || error == _reportedError)
+        return;
+    std::cerr << PROGRAM << ": " << error << std::endl;
+    _reportedError = error;
+    osgViewer::View* view = dynamic_cast<osgViewer::View*>(&aa);
+    if (_reloaded || !view || !view->getViewerBase())
+        return;
+    _exitCode = 1;
+    view->getViewerBase()->setDone(true);
 }
 
 void ViewerEventHandler::stepFrame(int step)

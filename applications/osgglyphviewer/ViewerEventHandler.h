@@ -11,7 +11,11 @@
  * - l: glyphs lit or unlit. The event is left unhandled, so that an osgGA::StateSetManipulator
  *   added after this handler toggles OpenGL lighting of the other geometry with the same key;
  * - n, p: the next and the previous frame of a multi-frame file (wrapping around);
- * - r: re-reads the glyph shaders (osgGlyphs::GlyphStateCache::reloadShaders). */
+ * - r: re-reads the glyph shaders (osgGlyphs::GlyphStateCache::reloadShaders).
+ *
+ * After every frame it looks for a glyph program that failed to compile or link and prints its
+ * line: with the shaders the viewer started with, that ends the viewer (exit code 1); after r,
+ * the window stays open for the next attempt. */
 class ViewerEventHandler : public osgGA::GUIEventHandler
 {
 public:
@@ -21,12 +25,19 @@ public:
 
     void getUsage(osg::ApplicationUsage& usage) const override;
 
+    /** 1 when a glyph program failed with the shaders the viewer started with, else 0. */
+    int getExitCode() const { return _exitCode; }
+
 protected:
     ~ViewerEventHandler() override = default;
 
     void stepFrame(int step);
+    void checkPrograms(osgGA::GUIActionAdapter& aa);
 
     osg::ref_ptr<ViewerScene> _scene;
+    bool _reloaded = false;
+    std::string _reportedError;
+    int _exitCode = 0;
 };
 
 #endif

@@ -10,6 +10,7 @@
 #include "ViewerOptions.h"
 #include "ViewerScene.h"
 
+#include <osgGlyphs/ProgramErrorFilter>
 #include <osgGlyphs/Version>
 #include <osgGlyphsPaper/Techniques>
 
@@ -22,6 +23,8 @@ int main(int argc, char** argv)
 {
     const auto start = std::chrono::steady_clock::now();
     osgGlyphsPaper::registerTechniques(); // --technique offers the paper's techniques too
+    // A glyph program that fails is reported in one line, by the headless and the window loops.
+    osg::setNotifyHandler(new osgGlyphs::ProgramErrorFilter(osg::getNotifyHandler()));
     osg::ArgumentParser arguments(&argc, argv);
     osg::ApplicationUsage* usage = arguments.getApplicationUsage();
     usage->setApplicationName(PROGRAM);

@@ -17,6 +17,10 @@ endfunction()
 # The program must load libosgGlyphs from the prefix, not from the build tree.
 function(check_loads_installed_library program)
     execute_process(COMMAND ldd "${program}" OUTPUT_VARIABLE output RESULT_VARIABLE result)
+    string(REGEX MATCH "libosgGlyphs[^\n]*=> not found" missing "${output}")
+    if(missing)
+        message(FATAL_ERROR "${program} does not find the installed library (no RPATH?): ${missing}")
+    endif()
     string(REGEX MATCH "libosgGlyphs[^\n]*=> ([^ \n]*)" line "${output}")
     set(library "${CMAKE_MATCH_1}")
     if(NOT result EQUAL 0 OR library STREQUAL "")
@@ -46,6 +50,22 @@ unset(ENV{OSG_LIBRARY_PATH})
 unset(ENV{LD_LIBRARY_PATH})
 run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
 
+# The installed programs and plugins find the installed libraries through their RPATH, with
+# LD_LIBRARY_PATH unset: the programs render, the plugins resolve their libraries.
+file(GLOB libdir LIST_DIRECTORIES true "${prefix}/lib*/osgPlugins-*" "${prefix}/lib/*/osgPlugins-*")
+get_filename_component(libdir "${libdir}" DIRECTORY)
+foreach(program osgglyphviewer osgglyphbench osgglyphexample)
+    check_loads_installed_library("${prefix}/bin/${program}")
+endforeach()
+file(GLOB plugins "${libdir}/osgPlugins-*/osgdb_*glyphs*.so")
+foreach(plugin IN LISTS plugins)
+    check_loads_installed_library("${plugin}")
+endforeach()
+run("${prefix}/bin/osgglyphviewer" "${prefix}/share/osgGlyphs/data/melt500.lammpstrj" --offscreen --size 160 120
+    --output "${WORK_DIR}/installed-viewer.png")
+run("${prefix}/bin/osgglyphexample" --output "${WORK_DIR}/installed-example.png" --size 160 120)
+run("${prefix}/bin/osgglyphbench" --help)
+
 run(${CMAKE_COMMAND} -S "${SOURCE_DIR}" -B "${WORK_DIR}/cmake-build" -DCMAKE_PREFIX_PATH=${prefix}
     "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" -DCMAKE_CXX_COMPILER=${CXX})
 run(${CMAKE_COMMAND} --build "${WORK_DIR}/cmake-build" --target consumer)
@@ -53,6 +73,7 @@ run_consumer("${WORK_DIR}/cmake-build/consumer" consumer-cmake.png)
 
 file(GLOB pc_dirs "${prefix}/lib*/pkgconfig" "${prefix}/lib/*/pkgconfig")
 set(ENV{PKG_CONFIG_PATH} "${pc_dirs}")
+# A program linked by hand has no RPATH of its own.
 execute_process(COMMAND pkg-config --cflags --libs osgGlyphs osgGlyphsHeadless OUTPUT_VARIABLE flags RESULT_VARIABLE result
     OUTPUT_STRIP_TRAILING_WHITESPACE)
 if(NOT result EQUAL 0)
@@ -61,8 +82,6 @@ endif()
 separate_arguments(flags UNIX_COMMAND "${flags}")
 separate_arguments(cxx_flags UNIX_COMMAND "${CXX_FLAGS}")
 run(${CXX} -std=c++17 ${cxx_flags} "${SOURCE_DIR}/consumer.cpp" ${flags} -o "${WORK_DIR}/consumer-pkgconfig")
-string(REPLACE ";" ":" library_path "${pc_dirs}")
-get_filename_component(libdir "${library_path}" DIRECTORY)
 set(ENV{LD_LIBRARY_PATH} "${libdir}")
 run_consumer("${WORK_DIR}/consumer-pkgconfig" consumer-pkgconfig.png)
 
@@ -83,10 +102,12 @@ if(NOT output MATCHES "osgGlyphs: using ${shader_dir}/osgGlyphs/")
 endif()
 
 # The installed plugins and sample data: stock osgconv turns a shipped LAMMPS dump into a
-# native OSG file of glyph clouds.
+# native OSG file of glyph clouds. OSG_LIBRARY_PATH is all it needs to find the plugins, which
+# find the libraries by their RPATH.
 find_program(OSGCONV osgconv)
 if(OSGCONV)
     unset(ENV{OSG_NOTIFY_LEVEL})
+    unset(ENV{LD_LIBRARY_PATH})
     set(ENV{OSG_LIBRARY_PATH} "${libdir}")
     set(sample "${prefix}/share/osgGlyphs/data/melt500.lammpstrj")
     set(converted "${WORK_DIR}/melt500.osgt")
@@ -103,6 +124,13 @@ if(OSGCONV)
         message(FATAL_ERROR "osgconv with the installed osgdb_glyphs wrote ${num_clouds} clouds, ${num_cones} of cones")
     endif()
     message("osgconv ${sample}: ${num_clouds} glyph clouds of cones")
+    # A paper technique: osgdb_serializers_osgglyphspaper writes it and reads it back.
+    run("${OSGCONV}" -O "technique=polygons frame=0" "${sample}" "${WORK_DIR}/melt500-polygons.osgt")
+    run("${OSGCONV}" "${WORK_DIR}/melt500-polygons.osgt" "${WORK_DIR}/melt500-polygons.osgb")
+    file(STRINGS "${WORK_DIR}/melt500-polygons.osgt" techniques REGEX "osgGlyphsPaper::PolygonsTechnique")
+    if(NOT techniques)
+        message(FATAL_ERROR "osgconv with the installed serializers wrote no osgGlyphsPaper::PolygonsTechnique")
+    endif()
 else()
     message("osgconv not installed: the installed plugins are not checked")
 endif()

@@ -6,6 +6,7 @@
 #include <osgGlyphs/GlyphCloud>
 #include <osgGlyphs/GlyphStateCache>
 #include <osgGlyphs/ImpostorTechniques>
+#include <osgGlyphs/ProgramErrorFilter>
 
 #include <osg/MatrixTransform>
 #include <osg/Sequence>
@@ -14,8 +15,10 @@
 #include <osgUtil/Optimizer>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
+#include <mutex>
 
 using namespace osgGlyphsTest;
 using osgGlyphs::ColorMap;
@@ -351,6 +354,148 @@ TEST_F(GlyphCloudData, AShaderFileOnTheDataPathOverridesTheEmbeddedCopy)
 
     EXPECT_TRUE(colorNear(overridden, 80, 60, magenta, 0));
     EXPECT_TRUE(colorNear(restored, 80, 60, osg::Vec4ub(0, 255, 0, 255), 0));
+}
+
+TEST_F(GlyphCloudData, ShaderFilesInTheWorkingFolderAreIgnored)
+{
+    // A stray lighting.glsl, by its bare name and under osgGlyphs/, where the program runs.
+    const std::string directory = outputPath("stray-shaders");
+    osgDB::makeDirectory(directory + "/osgGlyphs");
+    const std::string magenta =
+        "uniform vec3 osgGlyphs_material;\n"
+        "vec3 shade(vec3 base, vec3 position, vec3 normal, vec3 toEye) { return vec3(1.0, 0.0, 1.0); }\n";
+    std::ofstream(directory + "/lighting.glsl") << magenta;
+    std::ofstream(directory + "/osgGlyphs/lighting.glsl") << magenta;
+    const std::string builtIn = osgGlyphs::readShaderSource("osgGlyphs/lighting.glsl");
+    osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{osg::Vec3(), 1.0f, osg::Vec4ub(0, 255, 0, 255)}});
+    osg::ref_ptr<osg::Node> scene = group({cloud.get()});
+
+    const std::filesystem::path workingFolder = std::filesystem::current_path();
+    std::filesystem::current_path(directory);
+    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+    const std::string read = osgGlyphs::readShaderSource("osgGlyphs/lighting.glsl");
+    const Frame frame = renderer.render(scene.get());
+    std::filesystem::current_path(workingFolder);
+    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+
+    EXPECT_EQ(read, builtIn);
+    EXPECT_TRUE(colorNear(frame, 80, 60, osg::Vec4ub(0, 255, 0, 255), 0));
+}
+
+namespace
+{
+
+/** Records every message, of every severity, and passes it on to the next handler if any. */
+class NotifyRecorder : public osg::NotifyHandler
+{
+public:
+    explicit NotifyRecorder(osg::NotifyHandler* next = nullptr) : _next(next) {}
+    void notify(osg::NotifySeverity severity, const char* message) override
+    {
+        {
+            std::lock_guard<std::mutex> lock(_mutex);
+            _text += message;
+        }
+        if (_next.valid())
+            _next->notify(severity, message);
+    }
+    std::string getText() const
+    {
+        std::lock_guard<std::mutex> lock(_mutex);
+        return _text;
+    }
+
+private:
+    osg::ref_ptr<osg::NotifyHandler> _next;
+    mutable std::mutex _mutex;
+    std::string _text;
+};
+
+/** Renders the scene with the shader files of directory on OSG's data path; returns the program
+ * error and what osg::notify printed, through a ProgramErrorFilter in filtered. */
+std::string renderWithShadersOf(Renderer& renderer, osg::Node* scene, const std::string& directory,
+                                std::string& printed, std::string& filtered)
+{
+    osg::ref_ptr<NotifyRecorder> kept = new NotifyRecorder;
+    osg::ref_ptr<NotifyRecorder> all = new NotifyRecorder(new osgGlyphs::ProgramErrorFilter(kept.get()));
+    osg::ref_ptr<osg::NotifyHandler> previous = osg::getNotifyHandler();
+    osg::setNotifyHandler(all.get());
+    osgDB::getDataFilePathList().push_front(directory);
+    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+    renderer.render(scene);
+    const std::string error = osgGlyphs::GlyphStateCache::instance()->getProgramError();
+    osgDB::getDataFilePathList().pop_front();
+    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+    osg::setNotifyHandler(previous.get());
+    printed = all->getText();
+    filtered = kept->getText();
+    return error;
+}
+
+}
+
+TEST_F(GlyphCloudData, AShaderThatDoesNotCompileIsOneLineNamingItsFileAndLine)
+{
+    const std::string directory = outputPath("broken-shader");
+    osgDB::makeDirectory(directory + "/osgGlyphs");
+    // The sphere's code, which both the geometry and the fragment stage include, with no GLSL on line 3.
+    std::ofstream(directory + "/osgGlyphs/sphere.glsl") << "// broken\n\nthis is not GLSL;\n";
+    osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{osg::Vec3(), 1.0f, osg::Vec4ub(0, 255, 0, 255)}});
+    cloud->setLit(false);
+    osg::ref_ptr<osg::Node> scene = group({cloud.get()});
+
+    std::string printed, filtered;
+    const std::string error = renderWithShadersOf(renderer, scene.get(), directory, printed, filtered);
+    const std::string expected = "glyph program 'osgGlyphs geometry-shader' does not compile: " + directory +
+                                 "/osgGlyphs/sphere.glsl:3: error: ";
+    EXPECT_EQ(error.compare(0, expected.size(), expected), 0) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+    EXPECT_NE(printed.find("osgGlyphs: " + error + "\n"), std::string::npos) << printed;
+    EXPECT_EQ(filtered.find("osgGlyphs"), std::string::npos) << filtered;
+
+    // Reloaded without the broken file, the program works and the error is gone.
+    EXPECT_EQ(osgGlyphs::GlyphStateCache::instance()->getProgramError(), "");
+    const Frame frame = renderer.render(scene.get());
+    EXPECT_EQ(osgGlyphs::GlyphStateCache::instance()->getProgramError(), "");
+    EXPECT_TRUE(colorNear(frame, 80, 60, osg::Vec4ub(0, 255, 0, 255), 0));
+}
+
+TEST_F(GlyphCloudData, AProgramThatDoesNotLinkIsOneLine)
+{
+    const std::string directory = outputPath("unlinkable-shader");
+    osgDB::makeDirectory(directory + "/osgGlyphs");
+    // Lighting declared and never defined: every stage compiles, the program cannot link.
+    std::ofstream(directory + "/osgGlyphs/lighting.glsl")
+        << "uniform vec3 osgGlyphs_material;\nvec3 shade(vec3 base, vec3 position, vec3 normal, vec3 "
+           "toEye);\n";
+    osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{osg::Vec3(), 1.0f, osg::Vec4ub(0, 255, 0, 255)}});
+    osg::ref_ptr<osg::Node> scene = group({cloud.get()});
+
+    std::string printed, filtered;
+    const std::string error = renderWithShadersOf(renderer, scene.get(), directory, printed, filtered);
+    const std::string expected = "glyph program 'osgGlyphs geometry-shader' does not link: ";
+    EXPECT_EQ(error.compare(0, expected.size(), expected), 0) << error;
+    EXPECT_NE(error.find("error"), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+    EXPECT_EQ(filtered.find("osgGlyphs"), std::string::npos) << filtered;
+}
+
+TEST(ProgramErrorFilter, DropsTheReportsOfGlyphProgramsThatFailAndNothingElse)
+{
+    osg::ref_ptr<NotifyRecorder> kept = new NotifyRecorder;
+    osg::ref_ptr<osgGlyphs::ProgramErrorFilter> filter = new osgGlyphs::ProgramErrorFilter(kept.get());
+    filter->notify(osg::WARN, "FRAGMENT glCompileShader \"osgGlyphs/impostor.frag\" FAILED\n");
+    filter->notify(osg::WARN, "FRAGMENT Shader \"osgGlyphs/impostor.frag\" infolog:\n0:3(1): error: x\n");
+    filter->notify(osg::NOTICE, "glLinkProgram 0x5\"osgGlyphs geometry-shader\" FAILED\n");
+    filter->notify(osg::NOTICE, "Program \"osgGlyphs paper-quad\" infolog:\nerror: y\n");
+    filter->notify(osg::WARN, "osgGlyphs: glyph program 'osgGlyphs instanced' does not link: error: y\n");
+    const std::string others[] = {"VERTEX glCompileShader \"mine.vert\" FAILED\n",
+                                  "Program \"osgGlyphs geometry-shader\" link succeeded, infolog:\nwarning\n",
+                                  "osgGlyphs: 2 of 6 glyphs have a non-finite position\n"};
+    filter->notify(osg::WARN, others[0].c_str());
+    filter->notify(osg::INFO, others[1].c_str());
+    filter->notify(osg::WARN, others[2].c_str());
+    EXPECT_EQ(kept->getText(), others[0] + others[1] + others[2]);
 }
 
 TEST_F(GlyphCloudData, LitSceneMatchesBaseline)

@@ -15,7 +15,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
+
+#include <sys/wait.h>
 
 using namespace osgGlyphsTest;
 using osgGlyphs::GlyphCloud;
@@ -70,6 +73,32 @@ std::string threeFrameDump()
 osg::ref_ptr<osgDB::Options> withOptions(const std::string& text)
 {
     return new osgDB::Options(text);
+}
+
+/** A PLY file that OSG's own ply plugin reads (as a mesh of two points), and the reader's error. */
+const std::string BAD_PLY = "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+                            "property float z\nend_header\n1 2 3\n4 five 6\n";
+const std::string BAD_PLY_ERROR = ":9: column 'y': 'five' is not a number";
+
+bool hasOsgconv()
+{
+    return std::system("command -v osgconv >/dev/null 2>&1") == 0;
+}
+
+/** Runs stock osgconv with the arguments (quoted for the shell); returns its exit code, with
+ * what it printed in log. */
+int runOsgconv(const std::string& arguments, std::string& log)
+{
+    const std::string logFile = std::string(OSGGLYPHS_PLUGIN_TEST_DIR) + "/osgconv.log";
+    // Sanitizer builds: the stock program needs the ASan runtime before our plugin.
+    const std::string preload = OSGGLYPHS_STOCK_TOOL_PRELOAD;
+    const std::string environment =
+        preload.empty() ? std::string() : "env LD_PRELOAD=" + preload + " ASAN_OPTIONS=detect_leaks=0 ";
+    const std::string command = environment + "osgconv " + arguments + " >'" + logFile + "' 2>&1";
+    const int status = std::system(command.c_str());
+    std::ifstream in(logFile);
+    log = command + "\n" + std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 ReadResult readWithPlugin(const std::string& file, const std::string& options = std::string())
@@ -283,23 +312,43 @@ TEST(GlyphsPlugin, FailuresAreOneMessage)
     }
 }
 
+TEST(GlyphsPlugin, ItsErrorIsTheReadErrorOfAFileOsgsOwnPluginWouldReadToo)
+{
+    // Loaded first (as by osgconv -e glyphs), the plugin rejects the file; osgDB must not then
+    // load osgdb_ply, whose reader turns the same file into a mesh.
+    ASSERT_NE(osgDB::Registry::instance()->getReaderWriterForExtension("glyphs"), nullptr);
+    const std::string file = writeTestFile("bad.ply", BAD_PLY);
+    ReadResult result = osgDB::Registry::instance()->readNode(file, withOptions("").get());
+    EXPECT_EQ(result.getNode(), nullptr);
+    EXPECT_EQ(result.status(), ReadResult::ERROR_IN_READING_FILE);
+    EXPECT_EQ(result.message(), "osgdb_glyphs: " + file + BAD_PLY_ERROR);
+}
+
 TEST(GlyphsPlugin, StockOsgconvConvertsThroughThePlugin)
 {
-    if (std::system("command -v osgconv >/dev/null 2>&1") != 0)
+    if (!hasOsgconv())
         GTEST_SKIP() << "osgconv is not installed (Debian package openscenegraph)";
     const std::string file = writeTestFile("convert.csv", spheresCsv());
     const std::string output = std::string(OSGGLYPHS_PLUGIN_TEST_DIR) + "/converted.osgb";
     std::filesystem::remove(output);
-    // Sanitizer builds: the stock program needs the ASan runtime before our plugin.
-    const std::string preload = OSGGLYPHS_STOCK_TOOL_PRELOAD;
-    const std::string environment =
-        preload.empty() ? std::string() : "env LD_PRELOAD=" + preload + " ASAN_OPTIONS=detect_leaks=0 ";
-    const std::string command =
-        environment + "osgconv -O 'radius-by=radius unlit' '" + file + "' '" + output + "' >/dev/null 2>&1";
-    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    std::string log;
+    ASSERT_EQ(runOsgconv("-O 'radius-by=radius unlit' '" + file + "' '" + output + "'", log), 0) << log;
     osg::ref_ptr<osg::Node> converted = osgDB::readRefNodeFile(output);
     ASSERT_NE(asCloud(converted.get()), nullptr);
     expectAnalyticSpheres(converted.get(), "plugin_osgconv_spheres");
+}
+
+TEST(GlyphsPlugin, StockOsgconvFailsWithTheReadersLineOnAPlyFileThePluginRejects)
+{
+    if (!hasOsgconv())
+        GTEST_SKIP() << "osgconv is not installed (Debian package openscenegraph)";
+    const std::string file = writeTestFile("bad.ply", BAD_PLY);
+    const std::string output = std::string(OSGGLYPHS_PLUGIN_TEST_DIR) + "/bad.osgt";
+    std::filesystem::remove(output);
+    std::string log;
+    EXPECT_NE(runOsgconv("-e glyphs '" + file + "' '" + output + "'", log), 0) << log;
+    EXPECT_NE(log.find("osgdb_glyphs: " + file + BAD_PLY_ERROR), std::string::npos) << log;
+    EXPECT_FALSE(std::filesystem::exists(output));
 }
 
 TEST(GlyphMappingOptions, EveryOptionParsesItsValueOrSaysWhatIsWrong)

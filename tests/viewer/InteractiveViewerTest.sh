@@ -3,14 +3,18 @@
 #   InteractiveViewerTest.sh <osgglyphviewer> <osgglyphviewer_image_check> <data dir> <work dir>
 # Opens the viewer on spheres.lammpstrj (WriteViewerTestData.cmake) and takes screenshots with
 # its ScreenCaptureHandler key c: as it opens, after l (unlit), after n (next frame) and after a
-# mouse drag (trackball). Checks that each shows glyphs and that each step changed the picture,
-# then closes the window with Escape and checks the exit code.
+# mouse drag (trackball). Checks that each shows glyphs and that each step changed the picture.
+# Then a shader on OSG's data path that does not compile: after r, the viewer prints one line and
+# stays open, after its removal and r it draws again; Escape closes it with exit code 0. Last, the
+# viewer started with that shader prints the line and exits by itself with exit code 1.
 # Exits 77 (ctest SKIP_RETURN_CODE) when Xvfb or xdotool is missing.
 set -u
 viewer=$1 check=$2 data=$3 work=$4
 
 source "$(dirname "${BASH_SOURCE[0]}")/../harness/WindowSession.sh"
 window_session_begin "$work"
+mkdir -p shaders/osgGlyphs
+export OSG_FILE_PATH=$PWD/shaders
 launch "$viewer" "$data/spheres.lammpstrj" --size 400 300 --radius 0.5
 window=$(timeout 30 xdotool search --sync --name '^osgglyphviewer' | head -n 1)
 [[ -n $window ]] || fail "no osgglyphviewer window appeared"
@@ -48,5 +52,22 @@ done
 grep -q "glyphs unlit" viewer.log || fail "l did not report unlit glyphs"
 grep -q "frame 1 of 0..1" viewer.log || fail "n did not report frame 1"
 
+broken_line="osgglyphviewer: glyph program 'osgGlyphs geometry-shader' does not compile: $PWD/shaders/osgGlyphs/sphere.glsl:3: error: "
+printf '// broken\n\nthis is not GLSL;\n' >shaders/osgGlyphs/sphere.glsl
+xdotool key r && sleep 1
+grep -qF "$broken_line" viewer.log || fail "r with a broken shader did not print '$broken_line'"
+kill -0 "$viewer_pid" 2>/dev/null || fail "the viewer exited after r with a broken shader"
+rm shaders/osgGlyphs/sphere.glsl
+xdotool key r && sleep 0.5
+repaired=$(screenshot 4) || fail "no screenshot after repairing the shader"
+"$check" coverage "$repaired" 0.03 || fail "$repaired shows no glyphs after the repaired shader"
 close_with_escape
+
+# Started with the broken shader: one line on stderr, exit code 1, without a key pressed.
+printf '// broken\n\nthis is not GLSL;\n' >shaders/osgGlyphs/sphere.glsl
+"$viewer" "$data/spheres.lammpstrj" --size 400 300 >broken.out 2>broken.err
+status=$?
+[[ $status == 1 ]] || fail "started with a broken shader, the viewer exited with $status"
+[[ $(wc -l <broken.err) == 1 ]] && grep -qF "$broken_line" broken.err ||
+    fail "started with a broken shader, stderr is not the one line: $(cat broken.err)"
 echo "PASS: screenshots in $work"

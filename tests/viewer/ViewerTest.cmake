@@ -1,7 +1,8 @@
 # One case of the osgglyphviewer tests (ctest -L viewer), on the data of WriteViewerTestData.cmake:
 #   cmake -DCASE=<case> -DVIEWER=<osgglyphviewer> -DCHECK=<osgglyphviewer_image_check>
 #         -DDATA_DIR=<data> -DWORK_DIR=<scratch> -P ViewerTest.cmake
-# Cases: render, cone, frame, malformed, unknown_column, unknown_option, frames, default, help.
+# Cases: render, cone, frame, malformed, unknown_column, unknown_option, frames, default, help,
+# stray_shaders, broken_shader.
 cmake_minimum_required(VERSION 3.25)
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -12,9 +13,10 @@ set(view --size 160 120 --camera 0 0 5 0 0 0 0 1 0 --fov 30 --radius 0.5)
 # Frame 0 of spheres.lammpstrj.
 set(centres 0 0 0 1 0.7 0.5 -1 0.7 -0.5 1 -0.7 -0.5 -1 -0.7 0.3)
 
-# Runs the viewer; sets result, out and err.
+# Runs the viewer in viewer_dir; sets result, out and err.
+set(viewer_dir "${WORK_DIR}")
 macro(run_viewer)
-    execute_process(COMMAND "${VIEWER}" ${ARGN} WORKING_DIRECTORY "${WORK_DIR}"
+    execute_process(COMMAND "${VIEWER}" ${ARGN} WORKING_DIRECTORY "${viewer_dir}"
         RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
     message(STATUS "osgglyphviewer ${ARGN}\n-> ${result}\n${out}${err}")
 endmacro()
@@ -97,6 +99,31 @@ elseif(CASE STREQUAL "help")
             message(FATAL_ERROR "--help does not list key ${key}")
         endif()
     endforeach()
+elseif(CASE STREQUAL "stray_shaders")
+    # Shader files of the library's names where the viewer runs change nothing.
+    expect_success(${spheres} --output "${WORK_DIR}/clean.png" ${view})
+    set(viewer_dir "${WORK_DIR}/stray")
+    foreach(name sphere.glsl impostor.frag osgGlyphs/sphere.glsl osgGlyphs/impostor.frag)
+        file(WRITE "${viewer_dir}/${name}" "this is not GLSL;\n")
+    endforeach()
+    expect_success(${spheres} --output "${WORK_DIR}/stray.png" ${view})
+    if(err MATCHES "osgGlyphs|FAILED")
+        message(FATAL_ERROR "the stray shaders were read")
+    endif()
+    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK_DIR}/clean.png" "${WORK_DIR}/stray.png"
+        RESULT_VARIABLE differ)
+    if(differ)
+        message(FATAL_ERROR "the stray shaders changed the picture")
+    endif()
+elseif(CASE STREQUAL "broken_shader")
+    # A shader on OSG's data path that does not compile: one line naming it, exit code 1, no picture.
+    file(WRITE "${WORK_DIR}/shaders/osgGlyphs/sphere.glsl" "// broken\n\nthis is not GLSL;\n")
+    set(ENV{OSG_FILE_PATH} "${WORK_DIR}/shaders")
+    expect_failure("glyph program 'osgGlyphs geometry-shader' does not compile: [^\n]*/shaders/osgGlyphs/sphere.glsl:3: error: "
+        ${spheres} --offscreen --output broken.png ${view})
+    if(EXISTS "${WORK_DIR}/broken.png")
+        message(FATAL_ERROR "broken.png was written")
+    endif()
 else()
     message(FATAL_ERROR "unknown CASE '${CASE}'")
 endif()

@@ -2,6 +2,7 @@
 
 #include "../culling/OcclusionContext.h"
 #include "GlyphDefines.h"
+#include "GlyphProgram.h"
 
 #include <osg/ContextData>
 #include <osg/GLObjects>
@@ -64,16 +65,8 @@ osg::Program* GlyphStateCache::getProgramLocked(const GlyphTechnique& technique)
     osg::ref_ptr<osg::Program>& program = _programs[technique.getTechniqueName()];
     if (program)
         return program.get();
-    program = new osg::Program;
-    program->setName(std::string("osgGlyphs ") + technique.getTechniqueName());
-    const std::map<std::string, std::string>& generated = _generated[technique.getTechniqueName()] =
-        generatedSources(technique);
-    for (const GlyphShaderFile& file : technique.getShaderFiles())
-    {
-        osg::ref_ptr<osg::Shader> shader = new osg::Shader(file.type, readShaderSource(file.name, generated));
-        shader->setName(file.name);
-        program->addShader(shader.get());
-    }
+    program = new detail::GlyphProgram(technique, generatedSources(technique),
+                                       [this](const std::string& error) { reportProgramError(error); });
     for (const GlyphAttributeBinding& attribute : detail::getProgramAttributes(technique))
         program->addBindAttribLocation(attribute.name, attribute.location);
     return program.get();
@@ -159,17 +152,27 @@ void GlyphStateCache::pruneLocked()
 
 void GlyphStateCache::reloadShaders()
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    for (const auto& entry : _programs)
     {
-        osg::Program& program = *entry.second;
-        for (unsigned int i = 0; i < program.getNumShaders(); ++i)
-        {
-            osg::Shader* shader = program.getShader(i);
-            shader->setShaderSource(readShaderSource(shader->getName(), _generated[entry.first]));
-            shader->dirtyShader();
-        }
+        std::lock_guard<std::mutex> lock(_mutex);
+        for (const auto& entry : _programs)
+            static_cast<detail::GlyphProgram&>(*entry.second).reloadShaders();
     }
+    std::lock_guard<std::mutex> lock(_programErrorMutex);
+    _programError.clear();
+}
+
+std::string GlyphStateCache::getProgramError() const
+{
+    std::lock_guard<std::mutex> lock(_programErrorMutex);
+    return _programError;
+}
+
+void GlyphStateCache::reportProgramError(const std::string& error)
+{
+    OSG_WARN << "osgGlyphs: " << error << std::endl;
+    std::lock_guard<std::mutex> lock(_programErrorMutex);
+    if (_programError.empty())
+        _programError = error;
 }
 
 void GlyphStateCache::observeContext(unsigned int contextID)

@@ -30,12 +30,20 @@ const std::string& getInstalledShaderDir()
     return dir;
 }
 
-/** A file of that name on OSG's data path, else in the installed shader folder. */
+/** A file of that name ("osgGlyphs/sphere.glsl") in a folder of OSG's data path, else in the
+ * installed shader folder. Unlike osgDB::findDataFile(), never the working folder and never the
+ * bare file name: a user's folder is no place for the library's shaders. An empty entry of the
+ * data path, which would stand for the working folder, is skipped too. */
 std::string findResourceFile(const std::string& name)
 {
-    const std::string path = osgDB::findDataFile(name);
-    if (!path.empty() || getInstalledShaderDir().empty())
-        return path;
+    for (const std::string& folder : osgDB::getDataFilePathList())
+    {
+        const std::string path = folder.empty() ? std::string() : osgDB::concatPaths(folder, name);
+        if (!path.empty() && osgDB::fileType(path) == osgDB::REGULAR_FILE)
+            return path;
+    }
+    if (getInstalledShaderDir().empty())
+        return std::string();
     const std::string installed = getInstalledShaderDir() + "/" + name;
     return osgDB::fileExists(installed) ? installed : std::string();
 }
@@ -76,7 +84,14 @@ void osgGlyphs::detail::registerEmbeddedResources(const std::string& folder, Emb
 
 std::string osgGlyphs::detail::readResource(const std::string& name)
 {
+    std::string origin;
+    return readResource(name, origin);
+}
+
+std::string osgGlyphs::detail::readResource(const std::string& name, std::string& origin)
+{
     const std::string path = findResourceFile(name);
+    origin = name;
     if (!path.empty())
     {
         osgDB::ifstream file(path.c_str());
@@ -85,6 +100,7 @@ std::string osgGlyphs::detail::readResource(const std::string& name)
         if (file)
         {
             OSG_INFO << "osgGlyphs: using " << path << " instead of the built-in " << name << std::endl;
+            origin = path;
             return text.str();
         }
         OSG_WARN << "osgGlyphs: cannot read " << path << "; using the built-in " << name << std::endl;

@@ -145,7 +145,13 @@ osg::ref_ptr<osg::Node> createScene(const osgGlyphsData::PointDataset& dataset, 
 
 }
 
-/** Reads point data as glyphs; see the README for the option string. */
+/** Reads point data as glyphs; see the README for the option string.
+ *
+ * Once loaded, the plugin owns the extensions of the point formats: osgDB's Registry, after the
+ * loaded plugins fail to read a file, loads the plugin named after its extension and takes what
+ * that one reads, so a .ply file this plugin rejects would become OSG's empty mesh, without a
+ * word. Aliasing the extensions to "glyphs" points that step at this plugin, and its error is
+ * what the reading program reports. */
 class ReaderWriterGlyphs : public osgDB::ReaderWriter
 {
 public:
@@ -157,7 +163,10 @@ public:
         for (const osgGlyphsData::PointFormat& format : osgGlyphsData::getPointFormats())
         {
             for (const std::string& extension : format.extensions)
+            {
                 supportsExtension(extension, format.description);
+                osgDB::Registry::instance()->addFileExtensionAlias(extension, PSEUDO_EXTENSION);
+            }
             formats += (formats.empty() ? "" : ", ") + format.name;
         }
         supportsOption("format=<name>", "Read as " + formats + ", whatever the extension");
