@@ -1,8 +1,11 @@
 // libFuzzer target: feeds arbitrary bytes through readPointStream in one format (OSGGLYPHS_FUZZ_FORMAT),
 // once from a seekable stream (size known) and once from one that cannot seek (size unknown).
 // Each read either succeeds with consistent frames or fails with exactly one error line naming the
-// input, and both reads agree on success and on the data.
+// input, and both reads agree on success and on the data. A successful read is read again as a
+// growing file, then resumed from where its complete frames end: together the two give the same
+// frames. The first frame is mapped to glyphs (the default radius searches nearest neighbours).
 
+#include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsData/PointReader>
 
 #include <cstddef>
@@ -43,13 +46,24 @@ private:
     std::size_t _at;
 };
 
-osg::ref_ptr<osgGlyphsData::PointDataset> read(std::istream& stream, std::string& error)
+bool isOneLineAboutTheInput(const std::string& message)
 {
-    osg::ref_ptr<osgGlyphsData::PointDataset> dataset = osgGlyphsData::readPointStream(
-        stream, OSGGLYPHS_FUZZ_FORMAT, "fuzz", osgGlyphsData::PointReadOptions(), error);
+    return !message.empty() && message.find('\n') == std::string::npos && message.compare(0, 4, "fuzz") == 0;
+}
+
+osg::ref_ptr<osgGlyphsData::PointDataset> read(std::istream& stream, std::string& error,
+                                               osgGlyphsData::PointReadOptions options = {})
+{
+    options.warning = [](const std::string& warning)
+    {
+        if (!isOneLineAboutTheInput(warning))
+            std::abort();
+    };
+    osg::ref_ptr<osgGlyphsData::PointDataset> dataset =
+        osgGlyphsData::readPointStream(stream, OSGGLYPHS_FUZZ_FORMAT, "fuzz", options, error);
     if (!dataset.valid())
     {
-        if (error.empty() || error.find('\n') != std::string::npos || error.compare(0, 4, "fuzz") != 0)
+        if (!isOneLineAboutTheInput(error))
             std::abort();
         return dataset;
     }
@@ -66,23 +80,70 @@ osg::ref_ptr<osgGlyphsData::PointDataset> read(std::istream& stream, std::string
     return dataset;
 }
 
+bool sameFrame(const osgGlyphsData::PointData& x, const osgGlyphsData::PointData& y)
+{
+    if (x.getColumnNames() != y.getColumnNames() || x.getNumPoints() != y.getNumPoints() ||
+        x.getTimestep() != y.getTimestep())
+        return false;
+    for (std::size_t c = 0; c < x.getNumColumns(); ++c)
+    {
+        if (*x.getColumn(c) != *y.getColumn(c))
+            return false;
+    }
+    return true;
+}
+
 bool same(const osgGlyphsData::PointDataset& a, const osgGlyphsData::PointDataset& b)
 {
     if (a.getNumFrames() != b.getNumFrames())
         return false;
     for (std::size_t f = 0; f < a.getNumFrames(); ++f)
     {
-        const osgGlyphsData::PointData& x = *a.getFrame(f);
-        const osgGlyphsData::PointData& y = *b.getFrame(f);
-        if (x.getColumnNames() != y.getColumnNames() || x.getNumPoints() != y.getNumPoints())
+        if (!sameFrame(*a.getFrame(f), *b.getFrame(f)))
             return false;
-        for (std::size_t c = 0; c < x.getNumColumns(); ++c)
-        {
-            if (*x.getColumn(c) != *y.getColumn(c))
-                return false;
-        }
     }
     return true;
+}
+
+// The input read as a file still being written, then from where that reading's complete frames
+// end: the frames of the two readings are those of the whole input read at once.
+void checkResumedReading(const std::string& bytes, const osgGlyphsData::PointDataset& whole)
+{
+    std::istringstream first(bytes);
+    osgGlyphsData::PointReadOptions options;
+    options.growing = true;
+    std::string error;
+    osg::ref_ptr<osgGlyphsData::PointDataset> growing = read(first, error, options);
+    if (!growing.valid())
+        std::abort();
+    const osgGlyphsData::PointStreamPosition end = growing->getEndOfCompleteFrames();
+    if (end.offset > bytes.size())
+        std::abort();
+    std::istringstream rest(bytes.substr(end.offset));
+    options.growing = false;
+    options.start = end;
+    osg::ref_ptr<osgGlyphsData::PointDataset> resumed = read(rest, error, options);
+    if (!resumed.valid() || growing->getNumFrames() + resumed->getNumFrames() != whole.getNumFrames())
+        std::abort();
+    for (std::size_t f = 0; f < whole.getNumFrames(); ++f)
+    {
+        const std::size_t before = growing->getNumFrames();
+        const osgGlyphsData::PointData* part =
+            f < before ? growing->getFrame(f) : resumed->getFrame(f - before);
+        if (!sameFrame(*part, *whole.getFrame(f)))
+            std::abort();
+    }
+}
+
+// Maps the first frame to glyphs with the default mapping: failures are one line.
+void checkMapping(const osgGlyphsData::PointDataset& dataset)
+{
+    std::string error;
+    osgGlyphsData::GlyphMapper mapper{osgGlyphsData::GlyphMappingOptions()};
+    if (mapper.prepare(dataset, 0, error))
+        mapper.createCloud(*dataset.getFrame(0), error);
+    if (error.find('\n') != std::string::npos)
+        std::abort();
 }
 
 } // namespace
@@ -98,5 +159,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size)
     osg::ref_ptr<osgGlyphsData::PointDataset> unknown = read(unseekable, error);
     if (known.valid() != unknown.valid() || (known.valid() && !same(*known, *unknown)))
         std::abort();
+    if (known.valid())
+    {
+        checkResumedReading(std::string(bytes, size), *known);
+        checkMapping(*known);
+    }
     return 0;
 }

@@ -1,9 +1,9 @@
 #include <osgGlyphsData/PointReader>
 
-#include <osg/Notify>
-
 #include "PointFormatTable.h"
 #include "readers/Fields.h"
+
+#include <osg/Notify>
 
 #include <algorithm>
 #include <cerrno>
@@ -139,10 +139,9 @@ osg::ref_ptr<PointDataset> osgGlyphsData::readPointStream(std::istream& stream, 
     dataset->setEndOfCompleteFrames(options.start);
     try
     {
-        const bool resuming = options.start.offset > 0 || options.start.frame > 0;
         if (scanner.atEnd())
         {
-            if (resuming || options.growing)
+            if (mayReadNothing(options))
                 return dataset;
             scanner.failAtLine(1, "the file is empty");
         }

@@ -1,5 +1,7 @@
 #include "FrameList.h"
 
+#include "Readers.h"
+
 using namespace osgGlyphsData;
 using namespace osgGlyphsData::readers;
 
@@ -36,7 +38,7 @@ void FrameList::add(PointData* frame, uint64_t firstLine)
 bool FrameList::leavesOutCutFrame(const ReadError& error)
 {
     const bool cut = error.endOfInput || (!_scanner.isLineTerminated() && _scanner.atEnd());
-    if (!cut || (_dataset.getNumFrames() == 0 && _emptyFrames == 0 && !mayBeEmpty()))
+    if (!cut || (_dataset.getNumFrames() == 0 && _emptyFrames == 0 && !mayReadNothing(_options)))
         return false;
     _dataset.addWarning(error.message + "; frame " + std::to_string(_fileFrame + 1) +
                         " is incomplete and left out");
@@ -47,7 +49,7 @@ void FrameList::finish(const std::string& noFrames)
 {
     const std::string where = _scanner.getName() + ":" + std::to_string(_firstEmptyLine) + ": ";
     const std::string first = "frame " + std::to_string(_firstEmptyFrame);
-    if (_dataset.getNumFrames() == 0 && !mayBeEmpty())
+    if (_dataset.getNumFrames() == 0 && !mayReadNothing(_options))
     {
         if (_emptyFrames == 0)
             _scanner.fail(noFrames);
@@ -60,9 +62,4 @@ void FrameList::finish(const std::string& noFrames)
     else if (_emptyFrames > 1)
         _dataset.addWarning(where + std::to_string(_emptyFrames) +
                             " frames without atoms left out, the first " + first);
-}
-
-bool FrameList::mayBeEmpty() const
-{
-    return _options.growing || _options.start.frame > 0 || _options.start.offset > 0;
 }

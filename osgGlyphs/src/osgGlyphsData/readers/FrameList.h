@@ -46,8 +46,6 @@ public:
     void finish(const std::string& noFrames);
 
 private:
-    bool mayBeEmpty() const;
-
     TextScanner& _scanner;
     PointDataset& _dataset;
     const PointReadOptions& _options;

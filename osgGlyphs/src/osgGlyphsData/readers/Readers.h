@@ -12,6 +12,12 @@ namespace osgGlyphsData
 namespace readers
 {
 
+/** Whether a reading may find no frame: of a growing file, or after options.start. */
+inline bool mayReadNothing(const PointReadOptions& options)
+{
+    return options.growing || options.start.frame > 0 || options.start.offset > 0;
+}
+
 /** Adds the frame of a single-frame format: its complete frames end where the stream ends. */
 inline void addOnlyFrame(const TextScanner& scanner, PointDataset& dataset, const PointReadOptions& options,
                          PointData* frame)
