@@ -73,6 +73,7 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
     viewer->getFrameCapture()->setCaptureDepth(false);
 
     const CameraView home = options.hasCamera ? options.camera : scene.getHomeView(options.fov, aspect);
+    warnIfGlyphsHidden(*scene.getContent(), *camera, home);
     const unsigned int frames = options.frames > 0 ? options.frames : 1;
     std::vector<double> times;
     for (unsigned int frame = 0; frame < frames; ++frame)

@@ -80,6 +80,7 @@ int runInteractive(ViewerScene& scene, const ViewerOptions& options, osg::Applic
         viewer->addEventHandler(handler.get());
 
     const CameraView home = options.hasCamera ? options.camera : scene.getHomeView(options.fov, aspect);
+    warnIfGlyphsHidden(*scene.getContent(), *camera, home);
     osg::ref_ptr<osgGA::TrackballManipulator> trackball = new osgGA::TrackballManipulator;
     trackball->setAutoComputeHomePosition(false);
     trackball->setHomePosition(home.eye, home.center, home.up);

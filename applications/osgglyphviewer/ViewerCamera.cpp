@@ -1,10 +1,13 @@
 #include "ViewerCamera.h"
 
+#include <osgGlyphs/GlyphDiagnosis>
+
 #include <osg/Matrixd>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iostream>
 
 CameraView frameBounds(const osg::BoundingBox& box, double fovY, double aspect)
 {
@@ -40,6 +43,14 @@ CameraView frameBounds(const osg::BoundingBox& box, double fovY, double aspect)
     view.eye = view.center + back * distance;
     view.up.set(0.0, 0.0, 1.0);
     return view;
+}
+
+void warnIfGlyphsHidden(osg::Node& content, const osg::Camera& camera, const CameraView& view)
+{
+    const std::string reason =
+        osgGlyphs::diagnoseGlyphView(content, camera, osg::Matrixd::lookAt(view.eye, view.center, view.up));
+    if (!reason.empty())
+        std::cerr << PROGRAM << ": warning: " << reason << std::endl;
 }
 
 CameraView orbit(const CameraView& view, double degrees)

@@ -6,6 +6,7 @@
 #include "ViewerOptions.h"
 
 #include <osg/BoundingBox>
+#include <osg/Camera>
 
 #include <string>
 #include <vector>
@@ -17,6 +18,10 @@ CameraView frameBounds(const osg::BoundingBox& box, double fovY, double aspect);
 
 /** The view turned by degrees about its centre, around its up vector: the camera path of --frames. */
 CameraView orbit(const CameraView& view, double degrees);
+
+/** Prints a warning line on stderr when the camera, looking from view, would show none or next to
+ * none of the scene's glyphs (osgGlyphs::diagnoseGlyphView); the viewer draws on. */
+void warnIfGlyphsHidden(osg::Node& content, const osg::Camera& camera, const CameraView& view);
 
 /** The degrees --frames turns the camera per frame. */
 const double ORBIT_DEGREES_PER_FRAME = 1.0;

@@ -324,6 +324,29 @@ TEST(GlyphsPlugin, ItsErrorIsTheReadErrorOfAFileOsgsOwnPluginWouldReadToo)
     EXPECT_EQ(result.message(), "osgdb_glyphs: " + file + BAD_PLY_ERROR);
 }
 
+TEST(GlyphsPlugin, AFileOfGlyphsThatWouldNotShowIsReadWithAWarningThatSaysWhy)
+{
+    const std::string file =
+        writeTestFile("still.csv", "x,y,z,vx,vy,vz\n-1,0,0,0,0,0\n1,0,0,0,0,0\n0,0,1,0,0,0\n");
+    osg::ref_ptr<NotifyCapture> capture = new NotifyCapture;
+    ReadResult result = readWithPlugin(file, "glyph=cone");
+    const std::string warnings = capture->stop();
+    ASSERT_NE(asCloud(result.getNode()), nullptr) << result.message();
+    EXPECT_NE(
+        warnings.find("osgdb_glyphs: " + file +
+                      ": warning: no glyph is drawn: every glyph is skipped (3 of 3 have a zero vector"),
+        std::string::npos)
+        << warnings;
+
+    capture = new NotifyCapture;
+    result = readWithPlugin(file, "radius=1e-6");
+    EXPECT_NE(capture->stop().find("warning: the glyphs hardly show: every glyph is under a pixel wide"),
+              std::string::npos);
+    capture = new NotifyCapture;
+    result = readWithPlugin(file, "glyph=cone vector=x,y,z");
+    EXPECT_EQ(capture->stop().find("warning"), std::string::npos);
+}
+
 TEST(GlyphsPlugin, StockOsgconvConvertsThroughThePlugin)
 {
     if (!hasOsgconv())

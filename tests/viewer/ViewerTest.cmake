@@ -2,7 +2,7 @@
 #   cmake -DCASE=<case> -DVIEWER=<osgglyphviewer> -DCHECK=<osgglyphviewer_image_check>
 #         -DDATA_DIR=<data> -DWORK_DIR=<scratch> -P ViewerTest.cmake
 # Cases: render, cone, frame, malformed, unknown_column, unknown_option, frames, default, help,
-# stray_shaders, broken_shader.
+# stray_shaders, broken_shader, hidden_cones, hidden_radius, hidden_sub_pixel, hidden_bounds.
 cmake_minimum_required(VERSION 3.25)
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -37,6 +37,19 @@ function(expect_failure pattern)
     string(STRIP "${err}" line)
     if(line MATCHES "\n" OR NOT line MATCHES "^osgglyphviewer: ${pattern}")
         message(FATAL_ERROR "expected one line on stderr matching 'osgglyphviewer: ${pattern}'")
+    endif()
+endfunction()
+
+# The viewer writes the picture (exit code 0) with one line on stderr: a warning matching pattern.
+function(expect_warning pattern)
+    file(REMOVE "${WORK_DIR}/hidden.png")
+    run_viewer(${ARGN} --offscreen --output hidden.png)
+    if(NOT result EQUAL 0 OR NOT EXISTS "${WORK_DIR}/hidden.png")
+        message(FATAL_ERROR "expected exit code 0 and hidden.png, got '${result}'")
+    endif()
+    string(STRIP "${err}" line)
+    if(line MATCHES "\n" OR NOT line MATCHES "^osgglyphviewer: warning: ${pattern}")
+        message(FATAL_ERROR "expected one line on stderr matching 'osgglyphviewer: warning: ${pattern}'")
     endif()
 endfunction()
 
@@ -124,6 +137,18 @@ elseif(CASE STREQUAL "broken_shader")
     if(EXISTS "${WORK_DIR}/broken.png")
         message(FATAL_ERROR "broken.png was written")
     endif()
+elseif(CASE STREQUAL "hidden_cones")
+    expect_warning("no glyph is drawn: every glyph is skipped \\(3 of 3 have a zero vector"
+        "${DATA_DIR}/still.csv" --glyph cone --size 160 120)
+elseif(CASE STREQUAL "hidden_radius")
+    expect_warning("no glyph is seen: the glyphs' depths, [^ ]+ to [^ ]+ from the eye, are lost to rounding"
+        ${spheres} --size 160 120 --radius 1e30)
+elseif(CASE STREQUAL "hidden_sub_pixel")
+    expect_warning("the glyphs hardly show: every glyph is under a pixel wide" ${spheres} --size 160 120
+        --radius 1e-6)
+elseif(CASE STREQUAL "hidden_bounds")
+    expect_warning("no glyph is drawn: the glyphs' bounds are not finite" "${DATA_DIR}/huge.csv" --size 160 120
+        --radius 1e38)
 else()
     message(FATAL_ERROR "unknown CASE '${CASE}'")
 endif()

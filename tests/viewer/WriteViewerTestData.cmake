@@ -3,6 +3,8 @@
 #                        -2..2; frame 0 has an atom at the origin and four at distinct depths around
 #                        it (the positions tests/viewer/ViewerTest.cmake checks depth at)
 #   malformed.lammpstrj  the same with 'zero' for a coordinate on line 12
+#   still.csv            three points whose velocities are all zero
+#   huge.csv             two points 3e38 from the origin, as far as float goes
 cmake_minimum_required(VERSION 3.25)
 
 # viewer_frame(<out> <timestep> <atom lines...>): one frame of a dump.
@@ -30,3 +32,5 @@ viewer_frame(frame1 100
 file(WRITE "${DIR}/spheres.lammpstrj" "${frame0}${frame1}")
 string(REPLACE "3 1 -1 0.7 -0.5" "3 1 -1 zero -0.5" malformed "${frame0}")
 file(WRITE "${DIR}/malformed.lammpstrj" "${malformed}")
+file(WRITE "${DIR}/still.csv" "x,y,z,vx,vy,vz\n-1,0,0,0,0,0\n1,0,0,0,0,0\n0,0,1,0,0,0\n")
+file(WRITE "${DIR}/huge.csv" "x,y,z\n3e38,0,0\n-3e38,0,0\n")

@@ -1,6 +1,7 @@
 // osgdb_glyphs: point data files (LAMMPS dumps, XYZ, CSV, PLY, VTK) read as glyph scenes by
 // any osgDB application, through the library's readers and its column-to-glyph mapping.
 
+#include <osgGlyphs/GlyphDiagnosis>
 #include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsData/PointReader>
 #include <osgGlyphsPaper/Techniques>
@@ -235,12 +236,18 @@ private:
 
     static ReadResult failure(const std::string& message) { return ReadResult("osgdb_glyphs: " + message); }
 
-    /** The glyphs of a dataset, or the error of its reading or mapping. */
+    /** The glyphs of a dataset, or the error of its reading or mapping. A scene in which a viewer
+     * would see no glyph is read with a warning that says why. */
     static ReadResult toScene(const osg::ref_ptr<osgGlyphsData::PointDataset>& dataset,
                               const ReadSettings& settings, std::string& error)
     {
         osg::ref_ptr<osg::Node> scene = dataset ? createScene(*dataset, settings, error) : nullptr;
-        return scene ? ReadResult(scene.get()) : failure(error);
+        if (!scene)
+            return failure(error);
+        const std::string hidden = osgGlyphs::diagnoseGlyphScene(*scene);
+        if (!hidden.empty())
+            OSG_WARN << "osgdb_glyphs: " << dataset->getSource() << ": warning: " << hidden << std::endl;
+        return ReadResult(scene.get());
     }
 };
 
