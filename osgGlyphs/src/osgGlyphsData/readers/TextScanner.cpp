@@ -171,11 +171,6 @@ void TextScanner::failEndOfFile(const std::string& what) const
                     true};
 }
 
-void TextScanner::failTooShort(uint64_t line, const std::string& what) const
-{
-    throw ReadError{_name + ":" + std::to_string(line == 0 ? 1 : line) + ": " + what, true};
-}
-
 void TextScanner::failAtByte(uint64_t offset, const std::string& what) const
 {
     throw ReadError{_name + ": byte " + std::to_string(offset) + ": " + what};

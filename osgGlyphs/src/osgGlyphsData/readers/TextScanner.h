@@ -102,9 +102,6 @@ public:
     [[noreturn]] void fail(const std::string& what) const;
     /** Throws "<name>:<line>: unexpected end of file<what>" as a ReadError of endOfInput. */
     [[noreturn]] void failEndOfFile(const std::string& what) const;
-    /** Throws "<name>:<line>: <what>" as a ReadError of endOfInput: the rest of the stream is
-     * too short for what that line promised. */
-    [[noreturn]] void failTooShort(uint64_t line, const std::string& what) const;
     /** Throws "<name>: byte <offset>: <what>". */
     [[noreturn]] void failAtByte(uint64_t offset, const std::string& what) const;
 
