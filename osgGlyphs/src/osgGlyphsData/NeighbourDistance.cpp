@@ -6,13 +6,14 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 
 namespace
 {
 
 /** The work one nearest-neighbour search may do: every ring of cells it goes through, cell it
- * looks into and point it compares counts one. */
-const std::size_t SEARCH_BUDGET = 100000;
+ * looks into and point it compares counts one. 2000 samples take at most 10 million steps. */
+const std::size_t SEARCH_BUDGET = 5000;
 
 /** Points in a cell beyond which the grid keeps one point of each position. */
 const std::ptrdiff_t CROWDED_CELL = 8;
@@ -61,6 +62,9 @@ public:
         }
         sortIntoCells(indices);
     }
+
+    /** The points the grid holds: one of each position in crowded cells. */
+    const std::vector<uint32_t>& getPoints() const { return _sorted; }
 
     /** The squared distance from point index to its nearest neighbour at a distance > 0, or
      * infinity when none is found within SEARCH_BUDGET. The search looks into shells of cells
@@ -224,11 +228,16 @@ double osgGlyphsData::detail::estimateNeighbourDistance(const std::vector<osg::V
         return 0.0;
 
     const PointGrid grid(positions, finite, boxMin, boxMax);
+    // Positions repeated many times make cells small for their spacing: grid the distinct ones.
+    std::unique_ptr<PointGrid> distinct;
+    if (2 * grid.getPoints().size() <= finite.size())
+        distinct = std::make_unique<PointGrid>(positions, grid.getPoints(), boxMin, boxMax);
+    const PointGrid& search = distinct ? *distinct : grid;
     const std::size_t stride = std::max<std::size_t>(1, finite.size() / std::max(1u, maxSamples));
     std::vector<double> distances2;
     for (std::size_t s = 0; s < finite.size(); s += stride)
     {
-        const double d2 = grid.nearestDistance2(finite[s]);
+        const double d2 = search.nearestDistance2(finite[s]);
         if (std::isfinite(d2))
             distances2.push_back(d2);
     }
