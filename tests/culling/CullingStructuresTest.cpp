@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 #include <set>
 
@@ -88,4 +89,20 @@ TEST(GlyphChunks, OrderIsAPermutationOfTheDrawnGlyphsAndBoxesHoldThem)
     }
     EXPECT_EQ(covered, drawn);
     EXPECT_GT(chunks.chunks.size(), drawn / 64);
+}
+
+// Boxes near the limit of a float have centres and extents that overflow it: the order still holds
+// each drawn glyph once, and casts no NaN to a cell number (UBSan).
+TEST(GlyphChunks, BoxesBeyondTheRangeOfAFloatAreOrderedToo)
+{
+    const float huge = 3e38f;
+    std::vector<osg::BoundingBox> boxes(4);
+    boxes[0].set(-huge, -huge, -huge, -huge * 0.5f, -huge * 0.5f, -huge * 0.5f);
+    boxes[1].set(huge * 0.5f, huge * 0.5f, huge * 0.5f, huge, huge, huge);
+    boxes[2].set(-1.0f, -1.0f, -1.0f, 1.0f, 1.0f, 1.0f);
+    boxes[3].set(huge, huge, huge, std::numeric_limits<float>::infinity(), huge, huge);
+    const GlyphChunks chunks = buildGlyphChunks(
+        unsigned(boxes.size()), [&](unsigned int i) { return boxes[i]; }, 1);
+    const std::multiset<unsigned int> ids(chunks.order->begin(), chunks.order->end());
+    EXPECT_EQ(ids, (std::multiset<unsigned int>{0, 1, 2, 3}));
 }

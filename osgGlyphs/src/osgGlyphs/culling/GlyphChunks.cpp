@@ -94,8 +94,12 @@ GlyphChunks osgGlyphs::detail::buildGlyphChunks(unsigned int numGlyphs,
     std::vector<uint64_t> keys(ids.size());
     const osg::Vec3d extent = centres.valid() ? osg::Vec3d(centres._max - centres._min) : osg::Vec3d();
     const double cells = double(1 << MORTON_BITS);
+    // Centres and extents overflow a float for boxes near its limit: a cell of NaN is cell 0.
     auto cell = [&](double value, double lo, double size)
-    { return uint32_t(size > 0.0 ? std::clamp((value - lo) / size * cells, 0.0, cells - 1.0) : 0.0); };
+    {
+        const double at = (value - lo) / size * cells;
+        return uint32_t(size > 0.0 && at > 0.0 ? std::min(at, cells - 1.0) : 0.0);
+    };
     for (size_t k = 0; k < ids.size(); ++k)
     {
         const osg::Vec3 c = glyphBox(ids[k]).center();
