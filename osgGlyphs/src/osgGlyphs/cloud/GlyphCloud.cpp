@@ -242,6 +242,7 @@ void GlyphCloud::setCompressedAttributes(bool compressed)
     _compressedAttributes = compressed;
     packRadii();
     packScalars();
+    updateChunks(); // the chunk boxes hold the radii as the GPU decodes them
     buildPrimitives();
     updateStateSet();
 }

@@ -212,7 +212,7 @@ void osgGlyphsData::readers::readXyz(TextScanner& scanner, PointDataset& dataset
                 scanner.fail(std::string(frame == 0 ? "not an XYZ file: " : "") +
                              "expected the number of atoms of frame " + std::to_string(frame + 1) +
                              ", found " + quote(text));
-                    const uint64_t countLine = scanner.getLineNumber();
+            const uint64_t countLine = scanner.getLineNumber();
             frames.add(readFrame(scanner, count, frame).get(), countLine);
         }
     }
