@@ -27,7 +27,7 @@ GlyphCloud::GlyphCloud()
 }
 
 GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
-    : osg::Geometry(other, copyop), _positions(copyArray(other._positions, copyop)),
+    : osg::Geometry(other, copyop), _origin(other._origin), _positions(copyArray(other._positions, copyop)),
       _radii(copyArray(other._radii, copyop)), _colors(copyArray(other._colors, copyop)),
       _scalars(copyArray(other._scalars, copyop)), _vectors(copyArray(other._vectors, copyop)),
       _colorMap(other._colorMap),
@@ -76,6 +76,12 @@ void GlyphCloud::setPositions(osg::Vec3Array* positions)
 {
     _positions = positions;
     dirtyGlyphs();
+}
+
+void GlyphCloud::setOrigin(const osg::Vec3d& origin)
+{
+    _origin = origin;
+    dirtyBound();
 }
 
 void GlyphCloud::setRadius(float radius)
@@ -368,10 +374,56 @@ void GlyphCloud::accept(osg::NodeVisitor& nv)
     cv->pushStateSet(_variantStateSet.get());
     cv->pushStateSet(detail::getViewStateSet(*cv));
     cv->pushStateSet(_cloudStateSet.get());
-    osg::Geometry::accept(nv);
+    cv->pushOntoNodePath(this);
+    cullRelativeToOrigin(*cv);
+    cv->popFromNodePath();
     cv->popStateSet();
     cv->popStateSet();
     cv->popStateSet();
+}
+
+void GlyphCloud::cullRelativeToOrigin(osgUtil::CullVisitor& cv)
+{
+    if (getCullCallback())
+    {
+        osg::DrawableCullCallback* callback = getCullCallback()->asDrawableCullCallback();
+        if (callback && callback->cull(&cv, this, &cv.getRenderInfo()))
+            return;
+        if (!callback)
+            getCullCallback()->run(this, &cv);
+    }
+    const osg::BoundingBox& box = getLocalBoundingBox();
+    osg::ref_ptr<osg::RefMatrix> modelView =
+        new osg::RefMatrix(osg::Matrixd::translate(_origin) * *cv.getModelViewMatrix());
+    cv.pushModelViewMatrix(modelView.get(), osg::Transform::RELATIVE_RF);
+    const bool culled = (isCullingActive() && cv.isCulled(box)) ||
+                        (cv.getComputeNearFarMode() != osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR &&
+                         box.valid() && !cv.updateCalculatedNearFar(*modelView, box));
+    if (!culled)
+    {
+        unsigned int pushed = 0;
+        if (getStateSet())
+        {
+            cv.pushStateSet(getStateSet());
+            ++pushed;
+        }
+        for (auto& stateFrustum : cv.getCurrentCullingSet().getStateFrustumList())
+        {
+            if (stateFrustum.second.contains(box))
+            {
+                cv.pushStateSet(stateFrustum.first.get());
+                ++pushed;
+            }
+        }
+        // The distance along the view axis, as osgUtil::CullVisitor measures it to sort.
+        const osg::Vec3d centre = box.valid() ? osg::Vec3d(box.center()) * *modelView : osg::Vec3d();
+        const float depth = -static_cast<float>(centre.z());
+        if (!osg::isNaN(depth))
+            cv.addDrawableAndDepth(this, modelView.get(), depth);
+        for (; pushed > 0; --pushed)
+            cv.popStateSet();
+    }
+    cv.popModelViewMatrix();
 }
 
 void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const

@@ -327,8 +327,28 @@ osg::BoundingBox GlyphCloud::computeGlyphBox(unsigned int i) const
 
 osg::BoundingBox GlyphCloud::computeBoundingBox() const
 {
-    osg::BoundingBox box;
+    osg::BoundingBox local;
     for (unsigned int i = 0; i < _numGlyphs; ++i)
-        box.expandBy(computeGlyphBox(i));
+        local.expandBy(computeGlyphBox(i));
+    _localBoundingBox = local;
+    if (!local.valid())
+        return local;
+    // The nearest floats outside the exact box.
+    const auto below = [](double value)
+    {
+        const float single = static_cast<float>(value);
+        return single > value ? std::nextafter(single, -std::numeric_limits<float>::max()) : single;
+    };
+    const auto above = [](double value)
+    {
+        const float single = static_cast<float>(value);
+        return single < value ? std::nextafter(single, std::numeric_limits<float>::max()) : single;
+    };
+    osg::BoundingBox box;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        box._min[axis] = below(_origin[axis] + local._min[axis]);
+        box._max[axis] = above(_origin[axis] + local._max[axis]);
+    }
     return box;
 }

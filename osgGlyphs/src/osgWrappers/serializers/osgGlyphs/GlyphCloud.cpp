@@ -126,6 +126,31 @@ static bool writeArrowHead(osgDB::OutputStream& os, const GlyphCloud& cloud)
     return true;
 }
 
+static bool checkCulling(const GlyphCloud&)
+{
+    return true;
+}
+
+static bool readCulling(osgDB::InputStream& is, GlyphCloud& cloud)
+{
+    std::string name;
+    is >> name;
+    osgGlyphs::GlyphCulling culling;
+    if (!osgGlyphs::parseCulling(name, culling))
+    {
+        is.throwException("osgGlyphs::GlyphCloud: unknown culling \"" + name + "\"");
+        return false;
+    }
+    cloud.setCulling(culling);
+    return true;
+}
+
+static bool writeCulling(osgDB::OutputStream& os, const GlyphCloud& cloud)
+{
+    os << std::string(osgGlyphs::getCullingName(cloud.getCulling())) << std::endl;
+    return true;
+}
+
 // osg::Geometry is left out of the chain: its arrays and primitive sets are derived from the
 // cloud's own, which are written here. The technique is an object with a wrapper of its own
 // (Techniques.cpp; osgdb_serializers_osgglyphspaper for the paper's).
@@ -151,4 +176,8 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
     ADD_USER_SERIALIZER(Anchor);
     ADD_USER_SERIALIZER(ArrowHead);
     ADD_BOOL_SERIALIZER(CompressedAttributes, true);
+    // Added after the first release of the format: text files without them read as before.
+    ADD_VEC3D_SERIALIZER(Origin, osg::Vec3d());
+    ADD_USER_SERIALIZER(Culling);
+    ADD_UINT_SERIALIZER(CullingChunkSize, 512u);
 }
