@@ -59,7 +59,6 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
     const double aspect = static_cast<double>(options.width) / options.height;
     osg::Camera* camera = viewer->getCamera();
     camera->setClearColor(options.background);
-    camera->setProjectionMatrixAsPerspective(options.fov, aspect, 1.0, 1000.0);
     scene.addLegend(camera, options.background);
     viewer->setSceneData(scene.getRoot());
 
@@ -73,6 +72,7 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
     viewer->getFrameCapture()->setCaptureDepth(false);
 
     const CameraView home = options.hasCamera ? options.camera : scene.getHomeView(options.fov, aspect);
+    setProjectionForView(*camera, options.fov, aspect, home);
     warnIfGlyphsHidden(*scene.getContent(), *camera, home);
     const unsigned int frames = options.frames > 0 ? options.frames : 1;
     std::vector<double> times;

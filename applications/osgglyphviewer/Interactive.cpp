@@ -72,7 +72,6 @@ int runInteractive(ViewerScene& scene, const ViewerOptions& options, osg::Applic
         window->setWindowName(std::string(PROGRAM) + (options.file.empty() ? "" : ": " + options.file));
     const double aspect = static_cast<double>(options.width) / options.height;
     camera->setClearColor(options.background);
-    camera->setProjectionMatrixAsPerspective(options.fov, aspect, 1.0, 1000.0);
     scene.addLegend(camera, options.background);
     viewer->setSceneData(scene.getRoot());
     osg::ref_ptr<ViewerEventHandler> keys = new ViewerEventHandler(&scene);
@@ -80,6 +79,7 @@ int runInteractive(ViewerScene& scene, const ViewerOptions& options, osg::Applic
         viewer->addEventHandler(handler.get());
 
     const CameraView home = options.hasCamera ? options.camera : scene.getHomeView(options.fov, aspect);
+    setProjectionForView(*camera, options.fov, aspect, home);
     warnIfGlyphsHidden(*scene.getContent(), *camera, home);
     osg::ref_ptr<osgGA::TrackballManipulator> trackball = new osgGA::TrackballManipulator;
     trackball->setAutoComputeHomePosition(false);

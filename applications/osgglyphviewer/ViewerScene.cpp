@@ -51,6 +51,12 @@ void ViewerScene::setHomeView(const CameraView& view)
     _homeView = view;
 }
 
+void setProjectionForView(osg::Camera& camera, double fovY, double aspect, const CameraView& view)
+{
+    const double distance = (view.eye - view.center).length();
+    camera.setProjectionMatrixAsPerspective(fovY, aspect, distance * 1e-3, distance * 1e3);
+}
+
 CameraView ViewerScene::getHomeView(double fovY, double aspect)
 {
     if (_hasHomeView)

@@ -70,6 +70,12 @@ protected:
     std::string _description;
 };
 
+/** A perspective projection for a view: near and far planes at a thousandth and a thousand times
+ * the viewing distance, from which OSG fits them to the scene each frame. A fixed starting pair
+ * would leave scenes far larger or smaller than it to rounding (points 1e17 apart come out blank
+ * from 1 and 1000). */
+void setProjectionForView(osg::Camera& camera, double fovY, double aspect, const CameraView& view);
+
 /** The scene the options ask for: the built-in scene, --random, or a file (read with progress)
  * mapped to glyphs, at --frame. Returns nullptr with a one-line error. */
 osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::string& error);

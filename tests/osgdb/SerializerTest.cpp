@@ -38,6 +38,9 @@ osg::ref_ptr<GlyphCloud> createFullCloud()
     cloud->setUniformLength(true);
     cloud->setAnchor(osgGlyphs::GlyphAnchor::Tail);
     cloud->setArrowHead(0.4f, 1.7f);
+    cloud->setOrigin(osg::Vec3d(0.25, -0.125, 0.5));
+    cloud->setCulling(osgGlyphs::GlyphCulling::Frustum);
+    cloud->setCullingChunkSize(64);
     osg::ref_ptr<osgGlyphsPaper::PolygonsTechnique> polygons = new osgGlyphsPaper::PolygonsTechnique;
     polygons->setResolution(12, 6);
     cloud->setTechnique(polygons.get());
@@ -91,6 +94,9 @@ void expectSameCloud(const GlyphCloud& a, const GlyphCloud& b)
     }
     EXPECT_EQ(a.getColor(), b.getColor());
     EXPECT_EQ(a.getRadius(), b.getRadius());
+    EXPECT_EQ(a.getOrigin(), b.getOrigin());
+    EXPECT_EQ(a.getCulling(), b.getCulling());
+    EXPECT_EQ(a.getCullingChunkSize(), b.getCullingChunkSize());
 }
 
 class NativeFormats : public ::testing::TestWithParam<std::string>

@@ -87,7 +87,7 @@ void expectVertices(const std::string& bytes, const std::string& name)
     for (std::size_t c = 0; c < names.size(); ++c)
     {
         for (std::size_t v = 0; v < 2; ++v)
-            EXPECT_EQ((*frame.getColumn(c))[v], static_cast<float>(vertices[v][c]))
+            EXPECT_EQ(static_cast<float>(frame.getValue(c, v)), static_cast<float>(vertices[v][c]))
                 << name << " " << names[c];
     }
 }

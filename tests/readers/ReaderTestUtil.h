@@ -75,12 +75,15 @@ inline std::string writeFile(const std::string& name, const std::string& bytes)
     return path;
 }
 
-/** A copy of a column, empty (with a failure) when it is missing. */
+/** A column's file values (origin added, as floats), empty (with a failure) when it is missing. */
 inline std::vector<float> column(const osgGlyphsData::PointData& data, const std::string& name)
 {
-    const std::vector<float>* values = data.getColumn(name);
-    EXPECT_NE(values, nullptr) << "no column " << name;
-    return values ? *values : std::vector<float>();
+    const int index = data.findColumn(name);
+    EXPECT_GE(index, 0) << "no column " << name;
+    std::vector<float> values(index < 0 ? 0 : data.getNumPoints());
+    for (std::size_t i = 0; i < values.size(); ++i)
+        values[i] = static_cast<float>(data.getValue(static_cast<std::size_t>(index), i));
+    return values;
 }
 
 /** Binary data in either byte order. */

@@ -2,7 +2,8 @@
 #   cmake -DCASE=<case> -DVIEWER=<osgglyphviewer> -DCHECK=<osgglyphviewer_image_check>
 #         -DDATA_DIR=<data> -DWORK_DIR=<scratch> -P ViewerTest.cmake
 # Cases: render, cone, frame, malformed, unknown_column, unknown_option, frames, default, help,
-# stray_shaders, broken_shader, hidden_cones, hidden_radius, hidden_sub_pixel, hidden_bounds.
+# stray_shaders, broken_shader, hidden_cones, hidden_radius, hidden_sub_pixel, hidden_bounds, far,
+# vast.
 cmake_minimum_required(VERSION 3.25)
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -141,7 +142,8 @@ elseif(CASE STREQUAL "hidden_cones")
     expect_warning("no glyph is drawn: every glyph is skipped \\(3 of 3 have a zero vector"
         "${DATA_DIR}/still.csv" --glyph cone --size 160 120)
 elseif(CASE STREQUAL "hidden_radius")
-    expect_warning("no glyph is seen: the glyphs' depths, [^ ]+ to [^ ]+ from the eye, are lost to rounding"
+    # The projection is fitted to the view; what remains is the shaders' float range.
+    expect_warning("no glyph is seen: the glyphs lie up to [^ ]+ from the eye; beyond [^ ]+ the shaders' float arithmetic overflows"
         ${spheres} --size 160 120 --radius 1e30)
 elseif(CASE STREQUAL "hidden_sub_pixel")
     expect_warning("the glyphs hardly show: every glyph is under a pixel wide" ${spheres} --size 160 120
@@ -149,6 +151,23 @@ elseif(CASE STREQUAL "hidden_sub_pixel")
 elseif(CASE STREQUAL "hidden_bounds")
     expect_warning("no glyph is drawn: the glyphs' bounds are not finite" "${DATA_DIR}/huge.csv" --size 160 120
         --radius 1e38)
+elseif(CASE STREQUAL "far")
+    # 1e7 from the origin on each axis, seen from the same place relative to the data: the same
+    # picture, and the analytic depth.
+    set(common --offscreen --size 160 120 --fov 30 --radius 0.5)
+    expect_success("${DATA_DIR}/near.csv" --output near.png ${common} --camera 0 0 5 0 0 0 0 1 0)
+    expect_success("${DATA_DIR}/far.csv" --output far.png --depth-output far.pfm ${common}
+        --camera 10000000 10000000 10000005 10000000 10000000 10000000 0 1 0)
+    check(coverage far.png 0.05)
+    check(match far.png near.png 2 0.002)
+    check(depth far.pfm 160 120 30 5 0.5 ${centres})
+elseif(CASE STREQUAL "vast")
+    # Points 1e17 apart, framed automatically: drawn, without a warning.
+    expect_success("${DATA_DIR}/vast.csv" --offscreen --output vast.png --size 160 120)
+    if(err MATCHES "warning")
+        message(FATAL_ERROR "unexpected warning")
+    endif()
+    check(coverage vast.png 0.005)
 else()
     message(FATAL_ERROR "unknown CASE '${CASE}'")
 endif()

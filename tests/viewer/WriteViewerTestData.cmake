@@ -5,6 +5,8 @@
 #   malformed.lammpstrj  the same with 'zero' for a coordinate on line 12
 #   still.csv            three points whose velocities are all zero
 #   huge.csv             two points 3e38 from the origin, as far as float goes
+#   near.csv, far.csv    frame 0 of spheres.lammpstrj, and the same moved by 1e7 on each axis
+#   vast.csv             points 1e17 apart
 cmake_minimum_required(VERSION 3.25)
 
 # viewer_frame(<out> <timestep> <atom lines...>): one frame of a dump.
@@ -34,3 +36,7 @@ string(REPLACE "3 1 -1 0.7 -0.5" "3 1 -1 zero -0.5" malformed "${frame0}")
 file(WRITE "${DIR}/malformed.lammpstrj" "${malformed}")
 file(WRITE "${DIR}/still.csv" "x,y,z,vx,vy,vz\n-1,0,0,0,0,0\n1,0,0,0,0,0\n0,0,1,0,0,0\n")
 file(WRITE "${DIR}/huge.csv" "x,y,z\n3e38,0,0\n-3e38,0,0\n")
+file(WRITE "${DIR}/near.csv" "x,y,z\n0,0,0\n1,0.7,0.5\n-1,0.7,-0.5\n1,-0.7,-0.5\n-1,-0.7,0.3\n")
+file(WRITE "${DIR}/far.csv" "x,y,z\n10000000,10000000,10000000\n10000001,10000000.7,10000000.5\n"
+    "9999999,10000000.7,9999999.5\n10000001,9999999.3,9999999.5\n9999999,9999999.3,10000000.3\n")
+file(WRITE "${DIR}/vast.csv" "x,y,z\n0,0,0\n1e17,0,0\n0,1e17,0\n0,0,1e17\n")

@@ -110,7 +110,8 @@ bool GlyphMapper::prepare(const PointDataset& dataset, std::size_t startFrame, s
         return false;
     }
     std::vector<osg::Vec3f> positions;
-    if (!getPositions(*data, _options.positionColumns, positions, error))
+    osg::Vec3d origin;
+    if (!getPositions(*data, _options.positionColumns, positions, origin, error))
     {
         error = (_options.positionColumns.empty() ? frameName(*data) : option("position")) + ": " + error;
         return false;
@@ -155,8 +156,7 @@ bool GlyphMapper::resolveVectors(const PointData& data, bool required, std::stri
         _vectorColumns = _options.vectorColumns;
         return true;
     }
-    const std::vector<float>* columns[3];
-    const int found = findColumnTriple(data, VECTOR_CANDIDATES, columns);
+    const int found = findColumnTriple(data, VECTOR_CANDIDATES);
     if (found >= 0)
     {
         _vectorColumns = VECTOR_CANDIDATES[found];
@@ -174,7 +174,7 @@ bool GlyphMapper::resolveVectors(const PointData& data, bool required, std::stri
 bool GlyphMapper::resolveColor(const PointData& data, std::string& error)
 {
     const std::string& by = _options.colorBy;
-    const std::vector<float>* rgb[3];
+    ColumnValues rgb[3];
     _colorColumn.clear();
     if (by == "speed" && !data.hasColumn(by))
     {
@@ -202,7 +202,7 @@ bool GlyphMapper::resolveColor(const PointData& data, std::string& error)
     {
         _colorSource = ColorSource::RGB;
         float largest = 0.0f;
-        for (const std::vector<float>* column : rgb)
+        for (const ColumnValues& column : rgb)
             for (float value : *column)
                 largest = std::isfinite(value) ? std::max(largest, value) : largest;
         _rgbScale = largest > 1.0f ? 1.0f / 255.0f : 1.0f;
@@ -223,8 +223,8 @@ bool GlyphMapper::computeScalars(const PointData& data, std::vector<float>& scal
 {
     if (_colorSource == ColorSource::Column)
     {
-        const std::vector<float>* column = data.getColumn(_colorColumn);
-        if (!column)
+        ColumnValues column;
+        if (!column.assign(data, _colorColumn))
         {
             error = missingColumn(option("color-by"), _colorColumn, data);
             return false;
@@ -232,7 +232,7 @@ bool GlyphMapper::computeScalars(const PointData& data, std::vector<float>& scal
         scalars = *column;
         return true;
     }
-    const std::vector<float>* v[3];
+    ColumnValues v[3];
     if (!getColumnTriple(data, _vectorColumns, v))
     {
         error = frameName(data) + ": speed needs the columns " + joinColumns(_vectorColumns) + "; " +
@@ -294,7 +294,9 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
         _radius = _options.radius > 0.0f ? _options.radius : 1.0f; // the factor of --radius-by
         double sum = 0.0;
         std::size_t count = 0;
-        for (float value : *data.getColumn(_elementRadii ? "element" : _radiusColumn))
+        ColumnValues column;
+        column.assign(data, _elementRadii ? "element" : _radiusColumn);
+        for (float value : *column)
         {
             const float radius = _elementRadii ? elementOf(value).covalentRadius : value * _radius;
             if (std::isfinite(radius) && radius > 0.0f)
@@ -326,7 +328,7 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
     }
 
     _lengthScale = _options.lengthScale > 0.0f ? _options.lengthScale : 1.0f;
-    const std::vector<float>* v[3];
+    ColumnValues v[3];
     if (vectorShape && _options.lengthScale <= 0.0f && getColumnTriple(data, _vectorColumns, v))
     {
         double sum = 0.0;
@@ -363,7 +365,9 @@ void GlyphMapper::buildCategoryKey(const PointData& data)
     _key.kind = ColorKey::Categories;
     _key.title = elements ? "element" : column;
     std::set<long> values;
-    for (float value : *data.getColumn(column))
+    ColumnValues categories;
+    categories.assign(data, column);
+    for (float value : *categories)
     {
         if (std::isfinite(value) && std::fabs(value) <= 1e6f)
             values.insert(std::lround(value));
@@ -390,7 +394,8 @@ void GlyphMapper::buildCategoryKey(const PointData& data)
 osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::string& error) const
 {
     osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
-    if (!getPositions(data, _options.positionColumns, positions->asVector(), error))
+    osg::Vec3d origin;
+    if (!getPositions(data, _options.positionColumns, positions->asVector(), origin, error))
     {
         error = frameName(data) + ": " + error;
         return nullptr;
@@ -398,6 +403,7 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
     cloud->setName(data.getSource() + " timestep " + std::to_string(data.getTimestep()));
     applyGlyphStyle(*cloud, _options);
+    cloud->setOrigin(origin);
     cloud->setPositions(positions.get());
     if (!setRadii(*cloud, data, error) || !setVectors(*cloud, data, error) || !setColors(*cloud, data, error))
         return nullptr;
@@ -411,8 +417,8 @@ bool GlyphMapper::setRadii(GlyphCloud& cloud, const PointData& data, std::string
         cloud.setRadius(_radius);
         return true;
     }
-    const std::vector<float>* column = data.getColumn(_elementRadii ? "element" : _radiusColumn);
-    if (!column)
+    ColumnValues column;
+    if (!column.assign(data, _elementRadii ? "element" : _radiusColumn))
     {
         error = _elementRadii ? frameName(data) + ": no column 'element' for the radii of the elements; " +
                                     listColumns(data)
@@ -430,7 +436,7 @@ bool GlyphMapper::setVectors(GlyphCloud& cloud, const PointData& data, std::stri
 {
     if (_options.shape == GlyphShape::Sphere)
         return true;
-    const std::vector<float>* v[3];
+    ColumnValues v[3];
     if (!getColumnTriple(data, _vectorColumns, v))
     {
         error = missingColumn(option("vector"), joinColumns(_vectorColumns), data);
@@ -460,8 +466,8 @@ bool GlyphMapper::setColors(GlyphCloud& cloud, const PointData& data, std::strin
     if (_colorSource == ColorSource::Element || _colorSource == ColorSource::Category)
     {
         const std::string name = _colorSource == ColorSource::Element ? "element" : _colorColumn;
-        const std::vector<float>* column = data.getColumn(name);
-        if (!column)
+        ColumnValues column;
+        if (!column.assign(data, name))
         {
             error = frameName(data) + ": no column '" + name + "' to colour by; " + listColumns(data);
             return false;
@@ -471,7 +477,7 @@ bool GlyphMapper::setColors(GlyphCloud& cloud, const PointData& data, std::strin
     }
     else if (_colorSource == ColorSource::RGB)
     {
-        const std::vector<float>* rgb[3];
+        ColumnValues rgb[3];
         if (!getColumnTriple(data, RGB_COLUMNS, rgb))
         {
             error = frameName(data) + ": no red, green, blue columns; " + listColumns(data);

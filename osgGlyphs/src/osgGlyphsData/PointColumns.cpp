@@ -43,25 +43,38 @@ std::string osgGlyphsData::detail::listColumns(const PointData& data)
     return list;
 }
 
+bool osgGlyphsData::detail::ColumnValues::assign(const PointData& data, const std::string& name)
+{
+    const int index = data.findColumn(name);
+    _values = index < 0 ? nullptr : data.getColumn(static_cast<std::size_t>(index));
+    _shifted.clear();
+    if (!_values || data.getColumnOrigin(static_cast<std::size_t>(index)) == 0.0)
+        return _values != nullptr;
+    _shifted.resize(_values->size());
+    for (std::size_t i = 0; i < _shifted.size(); ++i)
+        _shifted[i] = static_cast<float>(data.getValue(static_cast<std::size_t>(index), i));
+    _values = &_shifted;
+    return true;
+}
+
 bool osgGlyphsData::detail::getColumnTriple(const PointData& data, const std::vector<std::string>& names,
-                                            const std::vector<float>* columns[3])
+                                            ColumnValues columns[3])
 {
     for (int axis = 0; axis < 3; ++axis)
     {
-        columns[axis] = names.size() == 3 ? data.getColumn(names[axis]) : nullptr;
-        if (!columns[axis])
+        if (names.size() != 3 || !columns[axis].assign(data, names[axis]))
             return false;
     }
     return true;
 }
 
 int osgGlyphsData::detail::findColumnTriple(const PointData& data,
-                                            const std::vector<std::vector<std::string>>& candidates,
-                                            const std::vector<float>* columns[3])
+                                            const std::vector<std::vector<std::string>>& candidates)
 {
     for (std::size_t index = 0; index < candidates.size(); ++index)
     {
-        if (getColumnTriple(data, candidates[index], columns))
+        const std::vector<std::string>& names = candidates[index];
+        if (data.hasColumn(names[0]) && data.hasColumn(names[1]) && data.hasColumn(names[2]))
             return static_cast<int>(index);
     }
     return -1;

@@ -2,6 +2,7 @@
 
 #include "PointColumns.h"
 
+#include <cmath>
 #include <utility>
 
 using namespace osgGlyphsData;
@@ -69,7 +70,23 @@ bool PointData::addColumn(const std::string& name, std::vector<float>&& values, 
     }
     _names.push_back(name);
     _columns.push_back(std::move(values));
+    _origins.push_back(0.0);
     _labels.emplace_back();
+    return true;
+}
+
+double PointData::getColumnOrigin(const std::string& name) const
+{
+    const int index = findColumn(name);
+    return index < 0 ? 0.0 : _origins[index];
+}
+
+bool PointData::setColumnOrigin(const std::string& name, double origin)
+{
+    const int index = findColumn(name);
+    if (index < 0)
+        return false;
+    _origins[index] = origin;
     return true;
 }
 
@@ -116,63 +133,81 @@ PointDataset::PointDataset() {}
 PointDataset::~PointDataset() {}
 
 bool osgGlyphsData::getPositions(const PointData& data, const std::vector<std::string>& columns,
-                                 std::vector<osg::Vec3f>& out, std::string& error)
+                                 std::vector<osg::Vec3f>& out, osg::Vec3d& origin, std::string& error)
 {
-    const std::vector<float>* triple[3] = {nullptr, nullptr, nullptr};
+    std::vector<std::string> names = columns;
     bool scaled = false;
     if (columns.empty())
     {
         // Cartesian, unwrapped, then box-scaled (LAMMPS' names).
         static const std::vector<std::vector<std::string>> candidates = {
             {"x", "y", "z"}, {"xu", "yu", "zu"}, {"xs", "ys", "zs"}, {"xsu", "ysu", "zsu"}};
-        const int found = findColumnTriple(data, candidates, triple);
-        if (found < 0)
+        const int index = findColumnTriple(data, candidates);
+        if (index < 0)
         {
             error = "no position columns (x y z, xu yu zu, xs ys zs or xsu ysu zsu); " + listColumns(data);
             return false;
         }
-        scaled = found >= 2;
+        names = candidates[index];
+        scaled = index >= 2;
         if (scaled && !data.hasBox())
         {
             error = "scaled coordinates need a simulation box, and the frame has none";
             return false;
         }
     }
-    else
+    else if (columns.size() != 3)
     {
-        if (columns.size() != 3)
+        error = "positions need exactly three columns, " + std::to_string(columns.size()) + " given";
+        return false;
+    }
+    int index[3];
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        index[axis] = data.findColumn(names[axis]);
+        if (index[axis] < 0)
         {
-            error = "positions need exactly three columns, " + std::to_string(columns.size()) + " given";
+            error = "no column '" + names[axis] + "'; " + listColumns(data);
             return false;
-        }
-        for (int axis = 0; axis < 3; ++axis)
-        {
-            triple[axis] = data.getColumn(columns[axis]);
-            if (!triple[axis])
-            {
-                error = "no column '" + columns[axis] + "'; " + listColumns(data);
-                return false;
-            }
         }
     }
 
     const std::size_t n = data.getNumPoints();
     out.resize(n);
-    const std::vector<float>& x = *triple[0];
-    const std::vector<float>& y = *triple[1];
-    const std::vector<float>& z = *triple[2];
     if (scaled)
     {
+        const osg::Vec3d& corner = data.getBox()._min;
+        origin.set(std::round(corner.x()), std::round(corner.y()), std::round(corner.z()));
         for (std::size_t i = 0; i < n; ++i)
         {
-            const osg::Vec3d p = data.scaledToCartesian(osg::Vec3d(x[i], y[i], z[i]));
+            const osg::Vec3d s(data.getValue(index[0], i), data.getValue(index[1], i),
+                               data.getValue(index[2], i));
+            const osg::Vec3d p = data.scaledToCartesian(s) - origin;
             out[i].set(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()));
         }
+        return true;
     }
-    else
+    // The columns' own origins: the offsets are the positions.
+    origin.set(data.getColumnOrigin(index[0]), data.getColumnOrigin(index[1]),
+               data.getColumnOrigin(index[2]));
+    const std::vector<float>& x = *data.getColumn(index[0]);
+    const std::vector<float>& y = *data.getColumn(index[1]);
+    const std::vector<float>& z = *data.getColumn(index[2]);
+    for (std::size_t i = 0; i < n; ++i)
+        out[i].set(x[i], y[i], z[i]);
+    return true;
+}
+
+bool osgGlyphsData::getPositions(const PointData& data, const std::vector<std::string>& columns,
+                                 std::vector<osg::Vec3f>& out, std::string& error)
+{
+    osg::Vec3d origin;
+    if (!getPositions(data, columns, out, origin, error))
+        return false;
+    if (origin != osg::Vec3d())
     {
-        for (std::size_t i = 0; i < n; ++i)
-            out[i].set(x[i], y[i], z[i]);
+        for (osg::Vec3f& p : out)
+            p = osg::Vec3f(osg::Vec3d(p) + origin);
     }
     return true;
 }

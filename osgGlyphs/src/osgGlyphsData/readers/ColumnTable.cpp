@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 using namespace osgGlyphsData;
@@ -16,6 +17,11 @@ namespace
 
 // Category indices are stored as floats: beyond 2^24 they would no longer be exact.
 const std::size_t maxLabels = std::size_t(1) << 24;
+
+bool withinFloatRange(double value)
+{
+    return std::abs(value) <= std::numeric_limits<float>::max(); // false for NaN
+}
 
 // The atomic number of a species label: a symbol, or the number itself; 0 when unknown.
 unsigned int elementNumber(const std::string& label)
@@ -108,12 +114,12 @@ void ColumnTable::appendRow(std::string_view line)
             const char* start = p;
             if (*p == '+')
                 ++p;
-            float value = 0.0f;
+            double value = 0.0;
             const fast_float::from_chars_result result = fast_float::from_chars(p, end, value);
             if (result.ec == std::errc() && result.ptr > p && (result.ptr == end || isBlank(*result.ptr)) &&
-                std::isfinite(value))
+                withinFloatRange(value))
             {
-                column.values.push_back(value);
+                appendNumber(column, value);
                 p = result.ptr;
                 continue;
             }
@@ -150,10 +156,10 @@ void ColumnTable::appendField(std::size_t index, std::string_view field)
     {
     case Number:
     {
-        float value = 0.0f;
-        if (!parseFloat(field, value) || !std::isfinite(value))
+        double value = 0.0;
+        if (!parseDouble(field, value) || !withinFloatRange(value))
             _scanner.fail(describeBadNumber(field, column.name));
-        column.values.push_back(value);
+        appendNumber(column, value);
         break;
     }
     case Logical:
@@ -177,6 +183,22 @@ void ColumnTable::appendField(std::size_t index, std::string_view field)
     }
 }
 
+void ColumnTable::appendNumber(Column& column, double value)
+{
+    if (column.values.empty() && std::abs(value) >= FarFromZero)
+        column.origin = std::round(value);
+    const double offset = value - column.origin;
+    if (column.origin != 0.0 && (std::abs(offset) > std::abs(value) || !withinFloatRange(offset)))
+    {
+        // Values farther from the origin than from zero: the origin no longer helps, the column
+        // goes back to plain values.
+        for (float& stored : column.values)
+            stored = static_cast<float>(column.origin + stored);
+        column.origin = 0.0;
+    }
+    column.values.push_back(static_cast<float>(value - column.origin));
+}
+
 void ColumnTable::appendLabel(Column& column, std::string_view field)
 {
     auto found = column.indices.find(field);
@@ -197,8 +219,7 @@ void ColumnTable::appendLabel(Column& column, std::string_view field)
 void ColumnTable::appendValue(std::size_t index, double value, uint64_t offset)
 {
     Column& column = _columns[index];
-    const float single = static_cast<float>(value);
-    if (!std::isfinite(single))
+    if (!withinFloatRange(value))
     {
         std::ostringstream text;
         text << "column '" << column.name << "': ";
@@ -208,7 +229,7 @@ void ColumnTable::appendValue(std::size_t index, double value, uint64_t offset)
             text << "value " << value << " is not a finite number";
         _scanner.failAtByte(offset, text.str());
     }
-    column.values.push_back(single);
+    appendNumber(column, value);
 }
 
 osg::ref_ptr<PointData> ColumnTable::finish()
@@ -232,6 +253,7 @@ osg::ref_ptr<PointData> ColumnTable::finish()
         else
         {
             data->addColumn(column.name, std::move(column.values), error);
+            data->setColumnOrigin(column.name, column.origin);
             if (column.kind == Category)
                 data->setColumnLabels(column.name, std::move(column.labels));
         }

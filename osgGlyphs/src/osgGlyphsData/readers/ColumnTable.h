@@ -26,7 +26,12 @@ std::vector<std::string> componentNames(const std::string& name, std::size_t cou
 
 /** Named float columns of one frame, filled row by row from text fields or binary values.
  * Every bad value throws through the scanner, naming the column, at the scanner's current line
- * (text) or at the given byte offset (binary). */
+ * (text) or at the given byte offset (binary).
+ *
+ * Numbers are read in double precision. A numeric column whose first value is FarFromZero or
+ * more from zero gets that value, rounded to an integer, as its origin, and keeps the offsets
+ * from it (PointData::getColumnOrigin()): coordinates 1e7 from zero keep their decimals. A
+ * value farther from the origin than from zero takes the column back to plain values. */
 class ColumnTable
 {
 public:
@@ -41,6 +46,9 @@ public:
 
     /** More columns than this are refused (a header of garbage, usually). */
     static constexpr std::size_t MaxColumns = 4096;
+
+    /** Where float values lose a thousandth of a unit (2^16: floats step by 1/128 there). */
+    static constexpr double FarFromZero = 65536.0;
 
     explicit ColumnTable(TextScanner& scanner);
 
@@ -87,11 +95,14 @@ private:
         std::string name;
         Kind kind;
         std::vector<float> values;
+        double origin = 0.0;
         std::vector<std::string> labels;
         std::map<std::string, float, std::less<>> indices;
     };
 
     void appendLabel(Column& column, std::string_view field);
+    /** Appends a finite number within the range of a float. */
+    static void appendNumber(Column& column, double value);
 
     TextScanner& _scanner;
     std::vector<Column> _columns;
