@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <iostream>
 
 #include <unistd.h>
 
@@ -73,19 +74,45 @@ private:
 }
 
 osg::ref_ptr<osgGlyphsData::PointDataset> loadDataset(const std::string& file, const std::string& format,
-                                                      std::string& error)
+                                                      bool growing, std::string& error)
 {
     ProgressIndicator progress(file);
     osgGlyphsData::PointReadOptions options;
     options.format = format;
+    options.growing = growing;
     options.progress = [&progress](uint64_t bytesRead, uint64_t totalBytes)
     { progress.update(bytesRead, totalBytes); };
     osg::ref_ptr<osgGlyphsData::PointDataset> dataset = osgGlyphsData::readPointFile(file, options, error);
     progress.finish(dataset.get());
-    if (dataset.valid() && dataset->getNumFrames() == 0)
+    if (dataset.valid() && dataset->getNumFrames() == 0 && !growing)
     {
         error = file + ": no points";
         return nullptr;
     }
     return dataset;
+}
+
+DatasetFollower::DatasetFollower(const std::string& file, const std::string& format,
+                                 osgGlyphsData::PointDataset* dataset)
+    : _file(file), _format(format), _dataset(dataset)
+{
+}
+
+bool DatasetFollower::poll(std::size_t& added, std::string& error)
+{
+    added = 0;
+    osgGlyphsData::PointReadOptions options;
+    options.format = _format;
+    options.growing = true;
+    options.start = _dataset->getEndOfCompleteFrames();
+    options.warning = [](const std::string& warning)
+    { std::cerr << PROGRAM << ": warning: " << warning << std::endl; };
+    osg::ref_ptr<osgGlyphsData::PointDataset> grown = osgGlyphsData::readPointFile(_file, options, error);
+    if (!grown)
+        return false;
+    for (const osg::ref_ptr<osgGlyphsData::PointData>& frame : grown->getFrames())
+        _dataset->addFrame(frame.get());
+    added = grown->getNumFrames();
+    _dataset->setEndOfCompleteFrames(grown->getEndOfCompleteFrames());
+    return true;
 }

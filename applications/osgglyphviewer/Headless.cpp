@@ -1,5 +1,6 @@
 #include "Headless.h"
 
+#include "DatasetLoading.h"
 #include "ViewerCamera.h"
 
 #include <osgGlyphs/GlyphStateCache>
@@ -9,6 +10,7 @@
 #include <osgDB/WriteFile>
 
 #include <iostream>
+#include <thread>
 #include <vector>
 
 namespace
@@ -40,6 +42,31 @@ bool writeOutputs(osgGlyphsHeadless::OffscreenViewer& viewer,
             return false;
         }
     }
+    return true;
+}
+
+/** Waits for the followed file to complete a frame, then shows its newest frame. */
+bool showNextFrame(ViewerScene& scene, double timeout, std::string& error)
+{
+    const auto start = std::chrono::steady_clock::now();
+    for (;;)
+    {
+        std::size_t added = 0;
+        if (!scene.followFile(added, error))
+            return false;
+        if (added > 0)
+            break;
+        if (millisecondsSince(start) > timeout * 1000.0)
+        {
+            error = "no new frame for " + std::to_string(static_cast<int>(timeout)) + " s of --follow";
+            return false;
+        }
+        std::this_thread::sleep_for(std::chrono::duration<double>(FOLLOW_POLL_SECONDS));
+    }
+    const std::size_t newest = scene.getNumFrames() - 1;
+    if (!scene.setFrame(newest, error))
+        return false;
+    std::cout << PROGRAM << ": frame " << newest << " completed" << std::endl;
     return true;
 }
 
@@ -78,18 +105,26 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
     std::vector<double> times;
     for (unsigned int frame = 0; frame < frames; ++frame)
     {
-        const CameraView view = orbit(home, frame * ORBIT_DEGREES_PER_FRAME);
+        std::string error;
+        if (scene.isFollowing() && frame > 0 && !showNextFrame(scene, options.followTimeout, error))
+        {
+            std::cerr << PROGRAM << ": " << error << std::endl;
+            return 1;
+        }
+        // Following a file, each picture shows a new frame of the data from the same place.
+        const double degrees = scene.isFollowing() ? 0.0 : frame * ORBIT_DEGREES_PER_FRAME;
+        const CameraView view = orbit(home, degrees);
         camera->setViewMatrixAsLookAt(view.eye, view.center, view.up);
         const auto frameStart = std::chrono::steady_clock::now();
         viewer->frame();
         times.push_back(millisecondsSince(frameStart));
-        std::string error = osgGlyphs::GlyphStateCache::instance()->getProgramError();
+        error = osgGlyphs::GlyphStateCache::instance()->getProgramError();
         if (!error.empty())
         {
             std::cerr << PROGRAM << ": " << error << std::endl;
             return 1;
         }
-        if (frame > 0)
+        if (frame > 0 && !scene.isFollowing())
             continue;
 
         if (!writeOutputs(*viewer, sceneCapture.get(), options, error))

@@ -1,5 +1,7 @@
 #include "ViewerEventHandler.h"
 
+#include "DatasetLoading.h"
+
 #include <osgGlyphs/GlyphStateCache>
 #include <osgViewer/View>
 
@@ -8,7 +10,10 @@
 bool ViewerEventHandler::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter& aa)
 {
     if (ea.getEventType() == osgGA::GUIEventAdapter::FRAME)
+    {
         checkPrograms(aa);
+        followFile(ea.getTime(), aa);
+    }
     if (ea.getHandled() || ea.getEventType() != osgGA::GUIEventAdapter::KEYDOWN)
         return false;
     switch (ea.getKey())
@@ -50,6 +55,29 @@ void ViewerEventHandler::checkPrograms(osgGA::GUIActionAdapter& aa)
         return;
     _exitCode = 1;
     view->getViewerBase()->setDone(true);
+}
+
+void ViewerEventHandler::followFile(double time, osgGA::GUIActionAdapter& aa)
+{
+    if (!_scene->isFollowing() || time < _nextPoll)
+        return;
+    _nextPoll = time + FOLLOW_POLL_SECONDS;
+    const bool onLastFrame = _scene->getFrame() + 1 == _scene->getNumFrames();
+    std::size_t added = 0;
+    std::string error;
+    if (!_scene->followFile(added, error))
+    {
+        if (error != _reportedError)
+            std::cerr << PROGRAM << ": " << error << std::endl;
+        _reportedError = error;
+        return;
+    }
+    if (added == 0)
+        return;
+    const std::size_t newest = _scene->getNumFrames() - 1;
+    std::cout << PROGRAM << ": frame " << newest << " completed" << std::endl;
+    if (onLastFrame && _scene->setFrame(newest, error))
+        aa.requestRedraw();
 }
 
 void ViewerEventHandler::stepFrame(int step)

@@ -33,11 +33,14 @@ protected:
 
     void stepFrame(int step);
     void checkPrograms(osgGA::GUIActionAdapter& aa);
+    /** --follow: reads the frames the file completed, and shows the newest while the last is shown. */
+    void followFile(double time, osgGA::GUIActionAdapter& aa);
 
     osg::ref_ptr<ViewerScene> _scene;
     bool _reloaded = false;
     std::string _reportedError;
     int _exitCode = 0;
+    double _nextPoll = 0.0;
 };
 
 #endif

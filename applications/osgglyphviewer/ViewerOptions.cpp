@@ -106,6 +106,13 @@ bool readInputOptions(osg::ArgumentParser& arguments, ViewerOptions& options, st
     }
     if (arguments.read("--seed", value))
         options.seed = static_cast<unsigned int>(value);
+    while (arguments.read("--follow"))
+        options.follow = true;
+    if (arguments.read("--follow-timeout", options.followTimeout) && !(options.followTimeout > 0.0))
+    {
+        error = "--follow-timeout needs a positive number of seconds";
+        return false;
+    }
     return true;
 }
 
@@ -243,6 +250,15 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--frames <k>", "Render k frames, turning the camera 1 degree about the "
                                                "centre each frame, print 'frame_ms median=.. min=.. max=..' "
                                                "and exit (in a window too).");
+    usage.addCommandLineOption(
+        "--follow", "Watch a dump that is still being written: a last frame half written is "
+                    "left out, and frames are added as they complete (the file is read again "
+                    "four times a second). In a window, the newest frame is shown while you are on the last "
+                    "one. Offscreen, each new frame is rendered (and --output rewritten) until "
+                    "--frames k pictures are made.");
+    usage.addCommandLineOption("--follow-timeout <s>",
+                               "Offscreen --follow: give up when no new frame completes for s seconds "
+                               "(default 60).");
     usage.addCommandLineOption("-h or --help", "Display this help: options and keys.");
 }
 
@@ -274,6 +290,11 @@ bool readViewerOptions(osg::ArgumentParser& arguments, ViewerOptions& options, s
     if (!options.file.empty() && options.randomCount > 0)
     {
         error = "give a file or --random, not both";
+        return false;
+    }
+    if (options.follow && options.file.empty())
+    {
+        error = "--follow needs a file";
         return false;
     }
     return true;

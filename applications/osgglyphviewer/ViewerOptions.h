@@ -33,6 +33,8 @@ struct ViewerOptions
     unsigned int frame = 0;
     unsigned int randomCount = 0; // --random N; 0: no random dataset
     unsigned int seed = 1;
+    bool follow = false;         // --follow: re-read the growing file, show frames as they complete
+    double followTimeout = 60.0; // --follow-timeout S: offscreen, the longest wait for a frame
 
     osgGlyphsData::GlyphMappingOptions mapping;
 

@@ -5,9 +5,13 @@
 #include "DatasetLoading.h"
 #include "ViewerCamera.h"
 
+#include <chrono>
+#include <iostream>
+#include <memory>
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
 #include <osgGlyphs/GlyphStateCache>
+#include <thread>
 
 ViewerScene::ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphsData::ColorKey& key)
     : _source(source), _numFrames(numFrames), _key(key), _root(new osg::Group), _content(new osg::Group)
@@ -29,6 +33,15 @@ bool ViewerScene::setFrame(std::size_t frame, std::string& error)
     _content->removeChildren(0, _content->getNumChildren());
     _content->addChild(node.get());
     _frame = frame;
+    return true;
+}
+
+bool ViewerScene::followFile(std::size_t& added, std::string& error)
+{
+    added = 0;
+    if (!_follower || !_follower(added, error))
+        return !_follower;
+    _numFrames += added;
     return true;
 }
 
@@ -69,11 +82,43 @@ CameraView ViewerScene::getHomeView(double fovY, double aspect)
 namespace
 {
 
+/** Waits until a followed file has count frames, reading it again every POLL_SECONDS. */
+bool waitForFrames(DatasetFollower& follower, const osgGlyphsData::PointDataset& dataset, std::size_t count,
+                   double timeout, std::string& error)
+{
+    const auto start = std::chrono::steady_clock::now();
+    if (dataset.getNumFrames() < count)
+        std::cerr << PROGRAM << ": waiting for frame " << count - 1 << " of " << dataset.getSource()
+                  << std::endl;
+    while (dataset.getNumFrames() < count)
+    {
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout)
+        {
+            error = dataset.getSource() + ": no frame " + std::to_string(count - 1) + " after " +
+                    std::to_string(static_cast<int>(timeout)) + " s of --follow";
+            return false;
+        }
+        std::this_thread::sleep_for(std::chrono::duration<double>(FOLLOW_POLL_SECONDS));
+        std::size_t added = 0;
+        if (!follower.poll(added, error))
+            return false;
+    }
+    return true;
+}
+
 osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, std::string& error)
 {
-    osg::ref_ptr<osgGlyphsData::PointDataset> dataset = loadDataset(options.file, options.format, error);
+    osg::ref_ptr<osgGlyphsData::PointDataset> dataset =
+        loadDataset(options.file, options.format, options.follow, error);
     if (!dataset)
         return nullptr;
+    std::shared_ptr<DatasetFollower> follower;
+    if (options.follow)
+    {
+        follower = std::make_shared<DatasetFollower>(options.file, options.format, dataset.get());
+        if (!waitForFrames(*follower, *dataset, options.frame + 1, options.followTimeout, error))
+            return nullptr;
+    }
     if (options.frame >= dataset->getNumFrames())
     {
         error = "--frame " + std::to_string(options.frame) + ": " + options.file + " has " +
@@ -94,6 +139,9 @@ osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, std::
         return osg::ref_ptr<osg::Node>(geode);
     };
     osg::ref_ptr<ViewerScene> scene = new ViewerScene(source, dataset->getNumFrames(), mapper.getColorKey());
+    if (follower)
+        scene->setFollower([follower](std::size_t& added, std::string& pollError)
+                           { return follower->poll(added, pollError); });
     const osgGlyphsData::PointData* data = dataset->getFrame(options.frame);
     scene->setDescription(options.file + ": " + std::to_string(dataset->getNumFrames()) + " frame" +
                           (dataset->getNumFrames() == 1 ? "" : "s") + " (" + dataset->getFormat() + "), " +

@@ -37,6 +37,15 @@ public:
     std::size_t getFrame() const { return _frame; }
     std::size_t getNumFrames() const { return _numFrames; }
 
+    /** Reads the frames its file completed since the last call; added: how many (--follow). */
+    typedef std::function<bool(std::size_t& added, std::string& error)> FrameFollower;
+    void setFollower(const FrameFollower& follower) { _follower = follower; }
+    bool isFollowing() const { return static_cast<bool>(_follower); }
+
+    /** Counts in the frames that the file completed since the last call (none without a
+     * follower); false with a one-line error when they cannot be read. */
+    bool followFile(std::size_t& added, std::string& error);
+
     /** Lit or flat glyphs, for every glyph of the scene. */
     void setLit(bool lit);
     bool getLit() const { return _lit; }
@@ -59,6 +68,7 @@ protected:
     ~ViewerScene() override = default;
 
     FrameSource _source;
+    FrameFollower _follower;
     std::size_t _numFrames;
     std::size_t _frame = 0;
     bool _lit = true;

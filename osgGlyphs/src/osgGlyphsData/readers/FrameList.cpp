@@ -16,9 +16,9 @@ void FrameList::add(PointData* frame, uint64_t firstLine)
     const uint64_t number = _fileFrame + 1;
     if (_options.growing && !_scanner.isLineTerminated() && _scanner.atEnd())
     {
-        _dataset.addWarning(_scanner.getName() + ":" + std::to_string(_scanner.getLineNumber()) +
-                            ": the last line has no end yet: frame " + std::to_string(number) +
-                            " is incomplete and left out");
+        _dataset.setIncompleteFrame(_scanner.getName() + ":" + std::to_string(_scanner.getLineNumber()) +
+                                    ": the last line has no end yet: frame " + std::to_string(number) +
+                                    " is incomplete and left out");
         return;
     }
     ++_fileFrame;
@@ -40,8 +40,12 @@ bool FrameList::leavesOutCutFrame(const ReadError& error)
     const bool cut = error.endOfInput || (!_scanner.isLineTerminated() && _scanner.atEnd());
     if (!cut || (_dataset.getNumFrames() == 0 && _emptyFrames == 0 && !mayReadNothing(_options)))
         return false;
-    _dataset.addWarning(error.message + "; frame " + std::to_string(_fileFrame + 1) +
-                        " is incomplete and left out");
+    const std::string leftOut =
+        error.message + "; frame " + std::to_string(_fileFrame + 1) + " is incomplete and left out";
+    if (_options.growing)
+        _dataset.setIncompleteFrame(leftOut);
+    else
+        _dataset.addWarning(leftOut);
     return true;
 }
 
