@@ -215,6 +215,10 @@ osg::Texture1D* ColorMap::getTexture() const
         return _texture.get();
     osg::ref_ptr<osg::Image> image = new osg::Image;
     fillImage(*image);
+    // Textures drop STATIC images after loading them where unref-after-apply is set (the
+    // Optimizer's OPTIMIZE_TEXTURE_SETTINGS sets it on every texture it finds): a shared colour
+    // map must keep its image for every context that comes later, and setColors() refills it.
+    image->setDataVariance(osg::Object::DYNAMIC);
     _texture = new osg::Texture1D(image.get());
     _texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
     _texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);

@@ -2,6 +2,7 @@
 #include <osgGlyphs/GlyphStateCache>
 
 #include "../culling/ChunkDrawer.h"
+#include "FlattenedTransforms.h"
 #include "../state/ViewState.h"
 
 #include <osg/Uniform>
@@ -357,6 +358,7 @@ double GlyphCloud::getGPUBytesPerGlyph() const
 
 void GlyphCloud::accept(osg::NodeVisitor& nv)
 {
+    detail::restoreFlattenedTransform(*this, nv);
     osgUtil::CullVisitor* cv = nv.asCullVisitor();
     if (!cv || !nv.validNodeMask(*this))
     {
