@@ -1,6 +1,7 @@
 // osgGlyphs: the screen-space bound of a glyph, shared by every technique that ray-casts.
 
 #include "occlusion.glsl"
+#include "clip.glsl"
 
 // True when the framebuffer has one sample per pixel, at its centre (no multisampling).
 uniform bool osgGlyphs_singleSample;
@@ -42,11 +43,32 @@ bool coversASample(vec2 corners[4])
     return false;
 }
 
+/** Keeps every vertex of the glyph's primitive from OSG's clip planes: glyphs are cut per
+ * fragment (clip.glsl). The last vertex stage calls it. */
+void keepVertexFromClipPlanes()
+{
+    gl_ClipDistance[0] = 1.0;
+    gl_ClipDistance[1] = 1.0;
+    gl_ClipDistance[2] = 1.0;
+    gl_ClipDistance[3] = 1.0;
+    gl_ClipDistance[4] = 1.0;
+    gl_ClipDistance[5] = 1.0;
+    gl_ClipDistance[6] = 1.0;
+    gl_ClipDistance[7] = 1.0;
+}
+
 /** Four NDC corners (in triangle-strip order) of a rectangle that contains the glyph, and the
-  * NDC depth of its nearest point; false when the glyph is wholly behind the near plane, covers
-  * no sample or lies behind what is drawn (isOccluded). */
+  * NDC depth of its nearest point; false when the glyph is wholly behind the near plane or on
+  * the removed side of a clip plane, covers no sample or lies behind what is drawn (isOccluded). */
 bool glyphBound(Glyph glyph, out vec2 corners[4], out float nearestNdcZ)
 {
+#ifdef OSGGLYPHS_VECTOR_SHAPE
+    vec4 enclosing = vectorBoundingSphere(glyph.sphere.xyz, glyph.axis.xyz, glyph.axis.w, glyph.sphere.w);
+#else
+    vec4 enclosing = glyph.sphere;
+#endif
+    if (isClippedAway(enclosing))
+        return false;
 #ifdef OSGGLYPHS_VECTOR_SHAPE
     if (!vectorScreenBound(glyph.sphere.xyz, glyph.axis.xyz, glyph.axis.w, glyph.sphere.w, corners, nearestNdcZ))
         return false;

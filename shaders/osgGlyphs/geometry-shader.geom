@@ -49,6 +49,7 @@ void main()
     {
         writeVaryings(glyph);
         gl_Position = vec4(corners[corner], nearestNdcZ, 1.0);
+        keepVertexFromClipPlanes();
         EmitVertex();
     }
     EndPrimitive();

@@ -19,6 +19,18 @@ struct Glyph
     vec4 color;
 };
 
+const float INFINITE_DISTANCE = 1.0e30;
+
+/** Where a ray runs inside a convex solid: from tEnter to tLeave (possibly infinite), with the
+ * solid's unit outward normals there. */
+struct Span
+{
+    float tEnter;
+    float tLeave;
+    vec3 nEnter;
+    vec3 nLeave;
+};
+
 bool isDrawn(Glyph glyph)
 {
     return glyph.sphere.w > 0.0 && !any(isnan(glyph.sphere)) && !any(isinf(glyph.sphere)) && !any(isnan(glyph.axis));

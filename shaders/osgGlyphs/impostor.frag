@@ -10,6 +10,7 @@
 #include "vector.glsl"
 #include "lighting.glsl"
 #include "varyings.glsl"
+#include "clip.glsl"
 
 out vec4 color;
 
@@ -19,40 +20,110 @@ out vec4 color;
 layout(depth_greater) out float gl_FragDepth;
 #endif
 
-/** The nearest surface point along the ray (t from the near plane) and its unit normal, or
-  * false. A glyph entered before the near plane is cut there: the cut faces the viewer. */
-bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
+/** The spans of the ray (eye space, unit direction) inside the glyph's convex parts; returns how
+ * many. */
+int glyphSpans(vec3 origin, vec3 direction, out Span spans[2])
 {
 #ifdef OSGGLYPHS_VECTOR_SHAPE
     vec3 axis = fragAxis.xyz;
     vec3 u, v;
     axisFrame(axis, u, v);
     vec3 relative = origin - fragSphere.xyz;
-    if (insideShape(vec3(dot(relative, u), dot(relative, v), dot(relative, axis)), fragSphere.w, fragAxis.w))
-    {
-        t = 0.0;
-        normal = -direction;
-        return true;
-    }
     // Solve from a point just before the glyph, where the quadratics are well conditioned.
     float reach = fragAxis.w + 2.0 * fragSphere.w * max(osgGlyphs_arrowParams.y, 1.0);
     float start = max(dot(-relative, direction) - reach, 0.0);
     relative += direction * start;
     vec3 o = vec3(dot(relative, u), dot(relative, v), dot(relative, axis));
     vec3 d = vec3(dot(direction, u), dot(direction, v), dot(direction, axis));
-    vec3 local;
-    intersectShape(o, d, fragSphere.w, fragAxis.w, t, local);
-    t += start;
-    normal = local.x * u + local.y * v + local.z * axis;
-    return t < INFINITE_DISTANCE;
+    int count = shapeSpans(o, d, fragSphere.w, fragAxis.w, spans);
+    mat3 toEye = mat3(u, v, axis);
+    for (int i = 0; i < count; ++i)
+        spans[i] = Span(spans[i].tEnter + start, spans[i].tLeave + start, toEye * spans[i].nEnter,
+                        toEye * spans[i].nLeave);
+    return count;
 #else
     float tEnter, tLeave;
-    if (!intersectSphere(origin, direction, fragSphere, tEnter, tLeave) || tLeave < 0.0)
-        return false;
-    t = max(tEnter, 0.0);
-    normal = tEnter >= 0.0 ? (origin + direction * t - fragSphere.xyz) / fragSphere.w : -direction;
-    return true;
+    if (!intersectSphere(origin, direction, fragSphere, tEnter, tLeave))
+        return 0;
+    vec3 centre = fragSphere.xyz;
+    spans[0] = Span(tEnter, tLeave, (origin + direction * tEnter - centre) / fragSphere.w,
+                    (origin + direction * tLeave - centre) / fragSphere.w);
+    return 1;
 #endif
+}
+
+/** The first point of a span that is drawn: its distance and the unit normal it is shaded with;
+ * false where the span shows nothing. The span is cut at the near plane (t = 0: the cut faces the
+ * viewer) and by the clip planes that are on: a cut shows as a cap facing the viewer where
+ * OSGGLYPHS_CLIP_CAPS is defined, else the solid's far side shows from within. */
+bool firstDrawnPoint(vec3 origin, vec3 direction, Span span, out float t, out vec3 normal)
+{
+    t = span.tEnter;
+    normal = span.nEnter;
+    if (t < 0.0)
+    {
+        t = 0.0;
+        normal = -direction;
+    }
+    float last = span.tLeave;
+    bool entryCut = false, exitCut = false;
+    for (int i = 0; i < MAX_CLIP_PLANES; ++i)
+    {
+        if (!isClipPlaneOn(i))
+            continue;
+        vec4 plane = gl_ClipPlane[i];
+        float atOrigin = dot(plane, vec4(origin, 1.0));
+        float rate = dot(plane.xyz, direction);
+        if (rate == 0.0)
+        {
+            if (atOrigin < 0.0)
+                return false;
+            continue;
+        }
+        float crossing = -atOrigin / rate;
+        if (rate > 0.0 && crossing > t)
+        {
+            t = crossing;
+            normal = -normalize(plane.xyz);
+            entryCut = true;
+        }
+        else if (rate < 0.0 && crossing < last)
+        {
+            last = crossing;
+            exitCut = true;
+        }
+    }
+    if (t > last)
+        return false;
+#ifndef OSGGLYPHS_CLIP_CAPS
+    if (entryCut)
+    {
+        if (exitCut)
+            return false;
+        t = span.tLeave;
+        normal = -span.nLeave;
+    }
+#endif
+    return true;
+}
+
+/** The nearest point drawn along the ray (t from the near plane) and its unit normal, or false. */
+bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
+{
+    Span spans[2];
+    int count = glyphSpans(origin, direction, spans);
+    t = INFINITE_DISTANCE;
+    for (int i = 0; i < count; ++i)
+    {
+        float tSpan;
+        vec3 nSpan;
+        if (firstDrawnPoint(origin, direction, spans[i], tSpan, nSpan) && tSpan < t)
+        {
+            t = tSpan;
+            normal = nSpan;
+        }
+    }
+    return t < INFINITE_DISTANCE;
 }
 
 /** The eye-space ray through this fragment's centre, from the near plane. */

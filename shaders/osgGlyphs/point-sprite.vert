@@ -15,6 +15,7 @@ void main()
 {
     Glyph glyph = decodeGlyph();
     writeVaryings(glyph);
+    keepVertexFromClipPlanes();
     vec2 corners[4];
     float nearestNdcZ;
     if (!isDrawn(glyph) || !glyphBound(glyph, corners, nearestNdcZ))

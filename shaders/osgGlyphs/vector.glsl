@@ -3,8 +3,6 @@
 
 #ifdef OSGGLYPHS_VECTOR_SHAPE
 
-const float INFINITE_DISTANCE = 1.0e30;
-
 /** The discs (z, radius) whose convex hull contains the shape; returns how many. */
 int shapeDiscs(float radius, float len, out vec2 discs[3])
 {
@@ -23,6 +21,17 @@ int shapeDiscs(float radius, float len, out vec2 discs[3])
     discs[2] = vec2(len, 0.0);
     return 3;
 #endif
+}
+
+/** A sphere (centre, radius) that contains the shape. */
+vec4 vectorBoundingSphere(vec3 base, vec3 axis, float len, float radius)
+{
+    vec2 discs[3];
+    int count = shapeDiscs(radius, len, discs);
+    float widest = max(discs[0].y, discs[1].y);
+    if (count > 2)
+        widest = max(widest, discs[2].y);
+    return vec4(base + axis * (0.5 * len), sqrt(0.25 * len * len + widest * widest));
 }
 
 /** Two unit vectors that complete the axis to a right-handed orthonormal frame. */
@@ -56,15 +65,11 @@ bool vectorScreenBound(vec3 base, vec3 axis, float len, float radius, out vec2 c
 {
     vec2 discs[3];
     int count = shapeDiscs(radius, len, discs);
-    float widest = max(discs[0].y, discs[1].y);
-    if (count > 2)
-        widest = max(widest, discs[2].y);
-    vec3 middle = base + axis * (0.5 * len);
-    float reach = sqrt(0.25 * len * len + widest * widest);
-    float beyondNear = distanceBeyondNearPlane(middle);
-    if (beyondNear < -reach)
+    vec4 enclosing = vectorBoundingSphere(base, axis, len, radius);
+    float beyondNear = distanceBeyondNearPlane(enclosing.xyz);
+    if (beyondNear < -enclosing.w)
         return false;
-    if (beyondNear <= reach)
+    if (beyondNear <= enclosing.w)
     {
         corners = vec2[4](vec2(-1.0, -1.0), vec2(1.0, -1.0), vec2(-1.0, 1.0), vec2(1.0, 1.0));
         nearestNdcZ = -1.0;
@@ -101,98 +106,104 @@ bool vectorScreenBound(vec3 base, vec3 axis, float len, float radius, out vec2 c
     return true;
 }
 
-void hitDisc(vec3 o, vec3 d, float z, float radius, float facing, inout float tBest, inout vec3 nBest)
+/** Where the ray o + t d (unit d) runs inside the solid of revolution of radius r0 at z0 changing
+ * linearly to r1 at z1 (both >= 0): between the end planes and inside the side. False if it misses. */
+bool frustumSpan(vec3 o, vec3 d, float z0, float r0, float z1, float r1, out Span span)
 {
+    span = Span(-INFINITE_DISTANCE, INFINITE_DISTANCE, vec3(0.0), vec3(0.0));
     if (abs(d.z) < 1e-12)
-        return;
-    float t = (z - o.z) / d.z;
-    vec2 p = o.xy + d.xy * t;
-    if (t >= 0.0 && t < tBest && dot(p, p) <= radius * radius)
     {
-        tBest = t;
-        nBest = vec3(0.0, 0.0, facing);
-    }
-}
-
-/** The side of a cylinder or truncated cone: radius r0 at z0 shrinking linearly to r1 at z1. */
-void hitSide(vec3 o, vec3 d, float z0, float r0, float z1, float r1, inout float tBest, inout vec3 nBest)
-{
-    // x^2 + y^2 = (r0 + slope (z - z0))^2, with slope = (r1 - r0) / (z1 - z0).
-    float slope = (r1 - r0) / (z1 - z0);
-    float radiusAtOrigin = r0 + slope * (o.z - z0);
-    float a = dot(d.xy, d.xy) - slope * slope * d.z * d.z;
-    float b = dot(o.xy, d.xy) - slope * radiusAtOrigin * d.z;
-    float c = dot(o.xy, o.xy) - radiusAtOrigin * radiusAtOrigin;
-    float roots[2];
-    if (abs(a) < 1e-12)
-    {
-        if (abs(b) < 1e-12)
-            return;
-        roots[0] = roots[1] = -c / (2.0 * b);
+        if (o.z < z0 || o.z > z1)
+            return false;
     }
     else
     {
-        float discriminant = b * b - a * c;
-        if (discriminant < 0.0)
-            return;
-        float s = sqrt(discriminant);
-        roots[0] = min((-b - s) / a, (-b + s) / a);
-        roots[1] = max((-b - s) / a, (-b + s) / a);
+        float t0 = (z0 - o.z) / d.z, t1 = (z1 - o.z) / d.z;
+        float up = sign(d.z);
+        span = Span(min(t0, t1), max(t0, t1), vec3(0.0, 0.0, -up), vec3(0.0, 0.0, up));
     }
-    for (int i = 0; i < 2; ++i)
+    // Inside the side: x^2 + y^2 <= rho^2, rho = r0 + slope (z - z0) >= 0, and rho = rho0 + rate t
+    // along the ray: q(t) = a t^2 + 2 b t + c <= 0.
+    float slope = (r1 - r0) / (z1 - z0);
+    float rho0 = r0 + slope * (o.z - z0);
+    float rate = slope * d.z;
+    float a = dot(d.xy, d.xy) - rate * rate;
+    float b = dot(o.xy, d.xy) - rho0 * rate;
+    float c = dot(o.xy, o.xy) - rho0 * rho0;
+    float sideEnter = -INFINITE_DISTANCE, sideLeave = INFINITE_DISTANCE;
+    float discriminant = b * b - a * c;
+    if (abs(a) < 1e-12)
     {
-        float t = roots[i];
-        float z = o.z + d.z * t;
-        float radiusAtHit = r0 + slope * (z - z0);
-        if (t >= 0.0 && t < tBest && z >= z0 && z <= z1 && radiusAtHit >= 0.0)
+        // Along a generator of the side (or the axis of a cylinder): q is linear.
+        if (abs(b) < 1e-12)
         {
-            vec2 p = o.xy + d.xy * t;
-            tBest = t;
-            nBest = normalize(vec3(p, -slope * radiusAtHit));
-            return;
+            if (c > 0.0)
+                return false;
         }
+        else if (b > 0.0)
+            sideLeave = -c / (2.0 * b);
+        else
+            sideEnter = -c / (2.0 * b);
     }
+    else if (a > 0.0)
+    {
+        // Inside between the roots; beyond the end planes the other nappe of the cone is cut off.
+        if (discriminant < 0.0)
+            return false;
+        float s = sqrt(discriminant);
+        sideEnter = (-b - s) / a;
+        sideLeave = (-b + s) / a;
+    }
+    else
+    {
+        // Steeper than the side: inside before the first root and after the second (everywhere
+        // without roots), on the nappe where rho >= 0, which begins at the apex.
+        float s = sqrt(max(discriminant, 0.0));
+        float apex = -rho0 / rate;
+        if (rate > 0.0)
+            sideEnter = discriminant >= 0.0 ? (-b - s) / a : apex;
+        else
+            sideLeave = discriminant >= 0.0 ? (-b + s) / a : apex;
+    }
+    if (sideEnter > span.tEnter)
+    {
+        vec3 p = o + d * sideEnter;
+        span.tEnter = sideEnter;
+        span.nEnter = normalize(vec3(p.xy, -slope * (r0 + slope * (p.z - z0))));
+    }
+    if (sideLeave < span.tLeave)
+    {
+        vec3 p = o + d * sideLeave;
+        span.tLeave = sideLeave;
+        span.nLeave = normalize(vec3(p.xy, -slope * (r0 + slope * (p.z - z0))));
+    }
+    return span.tEnter <= span.tLeave;
 }
 
-/** Whether a point (in the shape's frame) lies inside the solid. */
-bool insideSide(vec3 p, float z0, float r0, float z1, float r1)
-{
-    float r = mix(r0, r1, (p.z - z0) / (z1 - z0));
-    return p.z >= z0 && p.z <= z1 && dot(p.xy, p.xy) < r * r;
-}
-
-bool insideShape(vec3 p, float radius, float len)
+/** The spans of the ray inside the shape's convex parts; returns how many. An arrow's shaft and
+ * head make one span where the ray goes from one into the other. */
+int shapeSpans(vec3 o, vec3 d, float radius, float len, out Span spans[2])
 {
 #if defined(OSGGLYPHS_SHAPE_CYLINDER)
-    return insideSide(p, 0.0, radius, len, radius);
+    return frustumSpan(o, d, 0.0, radius, len, radius, spans[0]) ? 1 : 0;
 #elif defined(OSGGLYPHS_SHAPE_CONE)
-    return insideSide(p, 0.0, radius, len, 0.0);
+    return frustumSpan(o, d, 0.0, radius, len, 0.0, spans[0]) ? 1 : 0;
 #else
     float headStart = len * (1.0 - osgGlyphs_arrowParams.x);
-    return insideSide(p, 0.0, radius, headStart, radius) ||
-           insideSide(p, headStart, radius * osgGlyphs_arrowParams.y, len, 0.0);
-#endif
-}
-
-/** The nearest hit (t >= 0) of a ray with the shape, and its normal; tBest stays infinite on a miss. */
-void intersectShape(vec3 o, vec3 d, float radius, float len, out float tBest, out vec3 normal)
-{
-    tBest = INFINITE_DISTANCE;
-    normal = vec3(0.0, 0.0, 1.0);
-#if defined(OSGGLYPHS_SHAPE_CYLINDER)
-    hitSide(o, d, 0.0, radius, len, radius, tBest, normal);
-    hitDisc(o, d, 0.0, radius, -1.0, tBest, normal);
-    hitDisc(o, d, len, radius, 1.0, tBest, normal);
-#elif defined(OSGGLYPHS_SHAPE_CONE)
-    hitSide(o, d, 0.0, radius, len, 0.0, tBest, normal);
-    hitDisc(o, d, 0.0, radius, -1.0, tBest, normal);
-#else
-    float headStart = len * (1.0 - osgGlyphs_arrowParams.x);
-    float headRadius = radius * osgGlyphs_arrowParams.y;
-    hitSide(o, d, 0.0, radius, headStart, radius, tBest, normal);
-    hitDisc(o, d, 0.0, radius, -1.0, tBest, normal);
-    hitSide(o, d, headStart, headRadius, len, 0.0, tBest, normal);
-    hitDisc(o, d, headStart, headRadius, -1.0, tBest, normal);
+    int count = 0;
+    Span span;
+    if (frustumSpan(o, d, 0.0, radius, headStart, radius, span))
+        spans[count++] = span;
+    if (frustumSpan(o, d, headStart, radius * osgGlyphs_arrowParams.y, len, 0.0, span))
+        spans[count++] = span;
+    if (count == 2 && max(spans[0].tEnter, spans[1].tEnter) <= min(spans[0].tLeave, spans[1].tLeave))
+    {
+        int first = spans[0].tEnter <= spans[1].tEnter ? 0 : 1;
+        int last = spans[0].tLeave >= spans[1].tLeave ? 0 : 1;
+        spans[0] = Span(spans[first].tEnter, spans[last].tLeave, spans[first].nEnter, spans[last].nLeave);
+        count = 1;
+    }
+    return count;
 #endif
 }
 

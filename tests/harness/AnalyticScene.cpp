@@ -243,6 +243,34 @@ bool hitSolid(const Plane& solid, dvec3 origin, dvec3 direction, double tMin, Hi
     return true;
 }
 
+// Whether a point lies inside each solid (planes have no inside).
+
+bool isInside(const Sphere& solid, dvec3 p)
+{
+    return glm::length(p - dvec3(solid.sphere)) < solid.sphere.w;
+}
+
+bool isInside(const Segment& solid, dvec3 p)
+{
+    dvec3 u, v;
+    axisFrame(solid.axis, u, v);
+    dvec3 relative = p - solid.base;
+    double z = dot(relative, solid.axis);
+    double radius = solid.r0 + (solid.r1 - solid.r0) * (z - solid.z0) / (solid.z1 - solid.z0);
+    dvec2 across(dot(relative, u), dot(relative, v));
+    return z > solid.z0 && z < solid.z1 && glm::length(across) < radius;
+}
+
+bool isInside(const Box& solid, dvec3 p)
+{
+    return all(greaterThan(p, solid.min)) && all(lessThan(p, solid.max));
+}
+
+bool isInside(const Plane&, dvec3)
+{
+    return false;
+}
+
 }
 
 namespace osgGlyphsTest
@@ -315,7 +343,85 @@ int AnalyticScene::addArrow(const osg::Vec3d& tail, const osg::Vec3d& axis, doub
     return addSegment(tail, axis, headStart, radius * headRadius, length, 0.0, true, false, label);
 }
 
+void AnalyticScene::addClipPlane(const osg::Plane& plane)
+{
+    _clipPlanes.push_back(plane);
+}
+
+int AnalyticScene::labelInside(const osg::Vec3d& point, int label) const
+{
+    for (const Primitive& primitive : _primitives)
+    {
+        const auto inside = [&](const auto& solid) { return isInside(solid, toGlm(point)); };
+        if ((label < 0 || primitive.label == label) && std::visit(inside, primitive.solid))
+            return primitive.label;
+    }
+    return -1;
+}
+
+bool AnalyticScene::isKept(const osg::Vec3d& point) const
+{
+    for (const osg::Plane& plane : _clipPlanes)
+        if (plane.distance(point) < 0.0)
+            return false;
+    return true;
+}
+
+RayHit AnalyticScene::castClipped(const osg::Vec3d& origin, const osg::Vec3d& direction,
+                                  double minDistance) const
+{
+    // The nearest surface point the planes keep: step from surface to surface along the ray.
+    RayHit nearest;
+    double from = minDistance;
+    for (int surface = 0; surface < 64; ++surface)
+    {
+        const RayHit hit = castSurfaces(origin, direction, from);
+        if (!hit.hit())
+            break;
+        const osg::Vec3d before = hit.point - direction * 1e-7, after = hit.point + direction * 1e-7;
+        if (isKept(hit.point) && !(labelInside(before, hit.label) >= 0 && labelInside(after, hit.label) >= 0))
+        {
+            nearest = hit;
+            break;
+        }
+        from = hit.distance + 1e-9;
+    }
+    // Capped: where a plane crosses the ray inside a solid and the other planes keep the point.
+    for (std::size_t i = 0; _clipCaps && i < _clipPlanes.size(); ++i)
+    {
+        const osg::Vec3d normal = _clipPlanes[i].getNormal();
+        const double rate = normal * direction;
+        if (rate <= 0.0)
+            continue; // the ray leaves the kept side here: no cap faces it
+        const double t = -_clipPlanes[i].distance(origin) / rate;
+        const osg::Vec3d point = origin + direction * t;
+        if (t < minDistance || t >= nearest.distance)
+            continue;
+        bool kept = true;
+        for (std::size_t j = 0; j < _clipPlanes.size(); ++j)
+            kept = kept && (j == i || _clipPlanes[j].distance(point) >= 0.0);
+        const int label = kept ? labelInside(point) : -1;
+        if (label >= 0)
+        {
+            nearest.label = label;
+            nearest.distance = t;
+            nearest.point = point;
+            nearest.normal = -normal / normal.length();
+        }
+    }
+    if (nearest.hit() && nearest.normal * direction > 0.0)
+        nearest.normal = -nearest.normal;
+    return nearest;
+}
+
 RayHit AnalyticScene::cast(const osg::Vec3d& origin, const osg::Vec3d& direction, double minDistance) const
+{
+    return _clipPlanes.empty() ? castSurfaces(origin, direction, minDistance)
+                               : castClipped(origin, direction, minDistance);
+}
+
+RayHit AnalyticScene::castSurfaces(const osg::Vec3d& origin, const osg::Vec3d& direction,
+                                   double minDistance) const
 {
     const dvec3 o = toGlm(origin), d = toGlm(direction);
     Hit nearest;

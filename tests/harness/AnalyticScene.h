@@ -6,6 +6,8 @@
 
 #include "RenderHarness.h"
 
+#include <osg/Plane>
+
 #include <limits>
 #include <string>
 #include <vector>
@@ -67,7 +69,15 @@ public:
     int addArrow(const osg::Vec3d& tail, const osg::Vec3d& axis, double length, double radius,
                  double headLength, double headRadius);
 
-    /** The nearest hit at least minDistance along the ray. */
+    /** Keeps the half-space plane(p) >= 0 only (world coordinates, osg::ClipPlane's convention):
+     * surfaces beyond it are cut away. */
+    void addClipPlane(const osg::Plane& plane);
+    /** Capped, a cut shows the solid's cross-section in the plane, facing the viewer; open (the
+     * default), the surfaces behind the cut show. */
+    void setClipCaps(bool capped) { _clipCaps = capped; }
+
+    /** The nearest hit at least minDistance along the ray. With clip planes, the normal faces
+     * the ray's origin (the inside of a cut solid, a cap). */
     RayHit cast(const osg::Vec3d& origin, const osg::Vec3d& direction, double minDistance = 0.0) const;
 
     /** The hit through window point (x + dx, y + dy), between the frame's near and far planes. */
@@ -83,8 +93,18 @@ private:
     struct Primitive;
     int add(const Primitive& primitive);
 
+    /** The nearest surface hit, clip planes ignored. */
+    RayHit castSurfaces(const osg::Vec3d& origin, const osg::Vec3d& direction, double minDistance) const;
+    /** The nearest surface hit with clip planes; see cast. */
+    RayHit castClipped(const osg::Vec3d& origin, const osg::Vec3d& direction, double minDistance) const;
+    bool isKept(const osg::Vec3d& point) const;
+    /** The label of a solid (of the given label, or any for -1) the point lies inside; -1 for none. */
+    int labelInside(const osg::Vec3d& point, int label = -1) const;
+
     std::vector<Primitive> _primitives;
     int _numLabels = 0;
+    std::vector<osg::Plane> _clipPlanes;
+    bool _clipCaps = false;
 };
 
 }

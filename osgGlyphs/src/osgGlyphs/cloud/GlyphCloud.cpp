@@ -2,8 +2,9 @@
 #include <osgGlyphs/GlyphStateCache>
 
 #include "../culling/ChunkDrawer.h"
-#include "FlattenedTransforms.h"
+#include "../state/ClipPlaneState.h"
 #include "../state/ViewState.h"
+#include "FlattenedTransforms.h"
 
 #include <osg/Uniform>
 #include <osgUtil/CullVisitor>
@@ -417,6 +418,8 @@ void GlyphCloud::cullRelativeToOrigin(osgUtil::CullVisitor& cv)
                 ++pushed;
             }
         }
+        cv.pushStateSet(detail::getClipPlaneStateSet(detail::getClipPlaneMask(cv)));
+        ++pushed;
         // The distance along the view axis, as osgUtil::CullVisitor measures it to sort.
         const osg::Vec3d centre = box.valid() ? osg::Vec3d(box.center()) * *modelView : osg::Vec3d();
         const float depth = -static_cast<float>(centre.z());

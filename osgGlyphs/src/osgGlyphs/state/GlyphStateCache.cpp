@@ -54,6 +54,13 @@ void osgGlyphs::setGlyphLighting(osg::StateSet& stateSet, bool lit)
                                              (lit ? osg::StateAttribute::ON : osg::StateAttribute::OFF));
 }
 
+const char* const osgGlyphs::GLYPH_CLIP_CAPS_DEFINE = "OSGGLYPHS_CLIP_CAPS";
+
+void osgGlyphs::setClipCaps(osg::StateSet& stateSet, bool capped)
+{
+    stateSet.setDefine(GLYPH_CLIP_CAPS_DEFINE, capped ? osg::StateAttribute::ON : osg::StateAttribute::OFF);
+}
+
 GlyphStateCache* GlyphStateCache::instance()
 {
     static osg::ref_ptr<GlyphStateCache> s_instance = new GlyphStateCache;
