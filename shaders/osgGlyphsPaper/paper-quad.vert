@@ -38,5 +38,7 @@ void main()
     fragLocal = vec3(osgGlyphs_corner, 0.0);
     fragFrame = vec4(0.0);
 #endif
-    gl_Position = gl_ProjectionMatrix * vec4(middle + vec3(osgGlyphs_corner * halfSize, 0.0), 1.0);
+    vec4 eye = vec4(middle + vec3(osgGlyphs_corner * halfSize, 0.0), 1.0);
+    gl_Position = gl_ProjectionMatrix * eye;
+    gl_ClipVertex = eye; // OSG's clip planes cut the billboard where it is, in eye space
 }

@@ -10,5 +10,6 @@ void main()
 {
     fragColor = osgGlyphs_baseColor;
     gl_Position = gl_ModelViewProjectionMatrix * glyphPosition();
+    gl_ClipVertex = gl_ModelViewMatrix * glyphPosition(); // OSG's clip planes keep or drop a point
     gl_PointSize = 1.0;
 }

@@ -33,4 +33,5 @@ void main()
 #endif
     fragPosition = position;
     gl_Position = gl_ProjectionMatrix * vec4(position, 1.0);
+    gl_ClipVertex = vec4(position, 1.0); // OSG's clip planes cut the mesh as any mesh
 }
