@@ -12,6 +12,8 @@
 
 const char* const PROGRAM = "osgglyphviewer";
 
+const unsigned int MAX_CLIP_PLANES = 8;
+
 namespace
 {
 
@@ -144,6 +146,27 @@ bool readViewOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std
         error = "--fov: the vertical field of view must be between 0 and 180 degrees";
         return false;
     }
+    for (bool found = true; found;)
+    {
+        std::vector<double> plane(4);
+        if (!readNumbers(arguments, "--clip", plane, found, error))
+            return false;
+        if (!found)
+            break;
+        if (plane[0] == 0.0 && plane[1] == 0.0 && plane[2] == 0.0)
+        {
+            error = "--clip: the plane's normal (A B C) must not be zero";
+            return false;
+        }
+        if (options.clipPlanes.size() == MAX_CLIP_PLANES)
+        {
+            error = "--clip: at most " + std::to_string(MAX_CLIP_PLANES) + " planes";
+            return false;
+        }
+        options.clipPlanes.emplace_back(plane[0], plane[1], plane[2], plane[3]);
+    }
+    while (arguments.read("--clip-cap"))
+        options.clipCaps = true;
     float r = 0.0f, g = 0.0f, b = 0.0f;
     if (arguments.read("--background", r, g, b))
     {
@@ -209,7 +232,9 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--radius <r>", "One radius for every glyph (default: from the elements, else "
                                                "0.4 (spheres) or 0.2 (vectors) times the median "
                                                "nearest-neighbour distance). With --radius-by, a factor.");
-    usage.addCommandLineOption("--radius-by <column>", "Radius of each glyph from a column.");
+    usage.addCommandLineOption("--radius-by <column>", "Radius of each glyph from a column. Without it, a "
+                                                       "column named radius, or diameter (halved), gives "
+                                                       "the radii (LAMMPS granular dumps, most CSV files).");
     usage.addCommandLineOption("--color-by <column|speed>",
                                "Colour by a column through the colour map, or by speed, the length of "
                                "the vectors (--vector). Default: element colours where the data has an "
@@ -237,6 +262,11 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
                                "Look from eye e at centre c with up vector u (default: frame the data).");
     usage.addCommandLineOption("--fov <degrees>", "Vertical field of view (default 30).");
     usage.addCommandLineOption("--background <r> <g> <b>", "Background colour, 0..1 (default 1 1 1).");
+    usage.addCommandLineOption("--clip <A> <B> <C> <D>",
+                               "Cut the glyphs, keeping A*x + B*y + C*z + D >= 0 in data coordinates "
+                               "(osg::ClipPlane's convention); repeat for up to 8 planes.");
+    usage.addCommandLineOption("--clip-cap", "Cap the cuts of --clip: cut glyphs show a solid face in the "
+                                             "plane, as a sliced solid does.");
 
     usage.addCommandLineOption("--offscreen", "Render without a display (through OSMesa unless --headless "
                                               "says otherwise) instead of opening a window.");

@@ -8,13 +8,18 @@
 
 #include <osg/ApplicationUsage>
 #include <osg/ArgumentParser>
+#include <osg/Plane>
 #include <osg/Vec3d>
 #include <osg/Vec4>
 
 #include <string>
+#include <vector>
 
 /** The program's name in messages. */
 extern const char* const PROGRAM;
+
+/** The clip planes --clip may give: OSG's and every GL implementation's (GL_MAX_CLIP_PLANES >= 8). */
+extern const unsigned int MAX_CLIP_PLANES;
 
 /** A camera placed by eye, centre and up vector. */
 struct CameraView
@@ -45,6 +50,8 @@ struct ViewerOptions
     CameraView camera;
     double fov = 30.0;
     osg::Vec4 background = osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f);
+    std::vector<osg::Plane> clipPlanes; // --clip A B C D: keep A x + B y + C z + D >= 0
+    bool clipCaps = false;
 
     // Output
     bool offscreen = false;

@@ -14,9 +14,11 @@
 #include <thread>
 
 ViewerScene::ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphsData::ColorKey& key)
-    : _source(source), _numFrames(numFrames), _key(key), _root(new osg::Group), _content(new osg::Group)
+    : _source(source), _numFrames(numFrames), _key(key), _root(new osg::Group), _clipNode(new osg::ClipNode),
+      _content(new osg::Group)
 {
-    _root->addChild(_content.get());
+    _root->addChild(_clipNode.get());
+    _clipNode->addChild(_content.get());
     setLit(true);
 }
 
@@ -49,6 +51,15 @@ void ViewerScene::setLit(bool lit)
 {
     _lit = lit;
     osgGlyphs::setGlyphLighting(*_content->getOrCreateStateSet(), lit);
+}
+
+void ViewerScene::setClipPlanes(const std::vector<osg::Plane>& planes, bool capped)
+{
+    while (_clipNode->getNumClipPlanes() > 0)
+        _clipNode->removeClipPlane(0u);
+    for (unsigned int i = 0; i < planes.size(); ++i)
+        _clipNode->addClipPlane(new osg::ClipPlane(i, planes[i]));
+    osgGlyphs::setClipCaps(*_clipNode->getOrCreateStateSet(), capped);
 }
 
 void ViewerScene::addLegend(osg::Camera* camera, const osg::Vec4& background)
@@ -170,5 +181,6 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
     if (!scene || !scene->setFrame(options.frame, error))
         return nullptr;
     scene->setLit(options.mapping.lit);
+    scene->setClipPlanes(options.clipPlanes, options.clipCaps);
     return scene;
 }

@@ -8,6 +8,7 @@
 #include <osgGlyphsData/GlyphMapping>
 
 #include <osg/Camera>
+#include <osg/ClipNode>
 #include <osg/Group>
 
 #include <functional>
@@ -46,6 +47,10 @@ public:
      * follower); false with a one-line error when they cannot be read. */
     bool followFile(std::size_t& added, std::string& error);
 
+    /** Keeps only the half-spaces plane(p) >= 0 of the content (data coordinates); capped, cut
+     * glyphs show solid faces in the planes. */
+    void setClipPlanes(const std::vector<osg::Plane>& planes, bool capped);
+
     /** Lit or flat glyphs, for every glyph of the scene. */
     void setLit(bool lit);
     bool getLit() const { return _lit; }
@@ -74,6 +79,7 @@ protected:
     bool _lit = true;
     osgGlyphsData::ColorKey _key;
     osg::ref_ptr<osg::Group> _root;
+    osg::ref_ptr<osg::ClipNode> _clipNode; // between the root and the content
     osg::ref_ptr<osg::Group> _content;
     bool _hasHomeView = false;
     CameraView _homeView;

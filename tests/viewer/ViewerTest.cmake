@@ -3,7 +3,7 @@
 #         -DDATA_DIR=<data> -DWORK_DIR=<scratch> -P ViewerTest.cmake
 # Cases: render, cone, frame, malformed, unknown_column, unknown_option, frames, default, help,
 # stray_shaders, broken_shader, hidden_cones, hidden_radius, hidden_sub_pixel, hidden_bounds, far,
-# vast.
+# vast, clip, radius_column.
 cmake_minimum_required(VERSION 3.25)
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -102,7 +102,7 @@ elseif(CASE STREQUAL "default")
 elseif(CASE STREQUAL "help")
     expect_success(--help)
     foreach(option --format --frame --random --seed --position --radius --radius-by --color-by --colormap --range
-            --vector --length-scale --glyph --unlit --technique --size --camera --fov --background --offscreen
+            --vector --length-scale --glyph --unlit --technique --size --camera --fov --background --clip --clip-cap --offscreen
             --headless --output --depth-output --frames)
         if(NOT out MATCHES "\n  ${option} ")
             message(FATAL_ERROR "--help does not list ${option}")
@@ -138,6 +138,44 @@ elseif(CASE STREQUAL "broken_shader")
     if(EXISTS "${WORK_DIR}/broken.png")
         message(FATAL_ERROR "broken.png was written")
     endif()
+elseif(CASE STREQUAL "clip")
+    # Keep z <= 0.2: the camera on +z looks at the cut, open (the spheres' insides) or capped.
+    expect_success(${spheres} --output whole.png ${view})
+    expect_success(${spheres} --output open.png --clip 0 0 -1 0.2 ${view})
+    expect_success(${spheres} --output capped.png --clip 0 0 -1 0.2 --clip-cap ${view})
+    expect_success(${spheres} --output two.png --clip 0 0 -1 0.2 --clip 1 0 0 0 --clip-cap ${view})
+    check(coverage capped.png 0.05)
+    check(differ whole.png open.png 0.01)
+    check(differ open.png capped.png 0.01)
+    check(differ capped.png two.png 0.01)
+    expect_failure("--clip needs 4 numbers" ${spheres} --offscreen --clip 1 0 0)
+    expect_failure("--clip: the plane's normal \\(A B C\\) must not be zero" ${spheres} --offscreen --clip 0 0 0 1)
+    set(nine "")
+    foreach(i RANGE 8)
+        list(APPEND nine --clip 1 0 0 ${i})
+    endforeach()
+    expect_failure("--clip: at most 8 planes" ${spheres} --offscreen ${nine})
+elseif(CASE STREQUAL "radius_column")
+    # Without --radius-by: a radius column gives the radii, else a diameter column halved.
+    set(view_without_radius --size 160 120 --camera 0 0 5 0 0 0 0 1 0 --fov 30)
+    file(WRITE "${WORK_DIR}/radius.csv" "x,y,z,radius\n0,0,0,0.5\n1,0.7,0.5,0.25\n-1,-0.7,0,0.4\n")
+    file(WRITE "${WORK_DIR}/diameter.csv" "x,y,z,diameter\n0,0,0,1\n1,0.7,0.5,0.5\n-1,-0.7,0,0.8\n")
+    file(WRITE "${WORK_DIR}/neither.csv" "x,y,z,size\n0,0,0,1\n1,0.7,0.5,0.5\n-1,-0.7,0,0.8\n")
+    expect_success(radius.csv --output radius.png ${view_without_radius})
+    if(NOT out MATCHES "radius 1 x radius")
+        message(FATAL_ERROR "the radius column was not used")
+    endif()
+    expect_success(diameter.csv --output diameter.png ${view_without_radius})
+    if(NOT out MATCHES "radius 0.5 x diameter")
+        message(FATAL_ERROR "the diameter column was not used")
+    endif()
+    expect_success(neither.csv --output neither.png ${view_without_radius})
+    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK_DIR}/radius.png" "${WORK_DIR}/diameter.png"
+        RESULT_VARIABLE differ)
+    if(differ)
+        message(FATAL_ERROR "radii and halved diameters drew different pictures")
+    endif()
+    check(differ radius.png neither.png 0.01)
 elseif(CASE STREQUAL "hidden_cones")
     expect_warning("no glyph is drawn: every glyph is skipped \\(3 of 3 have a zero vector"
         "${DATA_DIR}/still.csv" --glyph cone --size 160 120)

@@ -286,12 +286,24 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
     const bool vectorShape = _options.shape != GlyphShape::Sphere;
     const std::size_t n = data.getNumPoints();
     _radiusColumn = _options.radiusColumn;
+    float factor = _options.radius > 0.0f ? _options.radius : 1.0f; // the factor of --radius-by
+    if (_radiusColumn.empty() && _options.radius <= 0.0f)
+    {
+        // Without --radius-by or --radius: a column of radii or diameters (LAMMPS granular dumps).
+        if (data.hasColumn("radius"))
+            _radiusColumn = "radius";
+        else if (data.hasColumn("diameter"))
+        {
+            _radiusColumn = "diameter";
+            factor = 0.5f;
+        }
+    }
     _elementRadii = _radiusColumn.empty() && _options.radius <= 0.0f && data.hasColumn("element");
     // A typical radius: the unit of the default length scale.
     float typical = 1.0f;
     if (!_radiusColumn.empty() || _elementRadii)
     {
-        _radius = _options.radius > 0.0f ? _options.radius : 1.0f; // the factor of --radius-by
+        _radius = factor;
         double sum = 0.0;
         std::size_t count = 0;
         ColumnValues column;

@@ -180,7 +180,8 @@ public:
         supportsOption("colormap=<name>|<file>", "viridis (default), magma, cividis, coolwarm, grayscale");
         supportsOption("range=<min>,<max>", "Colour range instead of the data's");
         supportsOption("radius=<r>", "Glyph radius, or the factor of radius-by");
-        supportsOption("radius-by=<column>", "Radii from a column");
+        supportsOption("radius-by=<column>",
+                       "Radii from a column (default: a radius column, else diameter halved)");
         supportsOption("position=<x>,<y>,<z>", "Position columns");
         supportsOption("vector=<x>,<y>,<z>", "Vector columns of cones, arrows and cylinders");
         supportsOption("length-scale=<s>", "Vector length per unit of magnitude");
