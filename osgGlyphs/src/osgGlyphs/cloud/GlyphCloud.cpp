@@ -8,6 +8,7 @@
 
 #include <osg/Uniform>
 #include <osgUtil/CullVisitor>
+#include <osgUtil/IntersectionVisitor>
 
 using namespace osgGlyphs;
 
@@ -282,6 +283,10 @@ GlyphCullingStatistics GlyphCloud::getCullingStatistics(unsigned int contextID) 
 
 void GlyphCloud::updateChunks()
 {
+    {
+        std::lock_guard<std::mutex> lock(_pickingMutex);
+        _pickingChunks.reset();
+    }
     if (_culling == GlyphCulling::Off || !getEffectiveTechnique()->supportsCulling())
     {
         _chunks.reset();
@@ -360,6 +365,14 @@ double GlyphCloud::getGPUBytesPerGlyph() const
 void GlyphCloud::accept(osg::NodeVisitor& nv)
 {
     detail::restoreFlattenedTransform(*this, nv);
+    if (osgUtil::IntersectionVisitor* iv = nv.asIntersectionVisitor(); iv && nv.validNodeMask(*this))
+    {
+        nv.pushOntoNodePath(this);
+        const bool picked = intersect(*iv);
+        nv.popFromNodePath();
+        if (picked)
+            return;
+    }
     osgUtil::CullVisitor* cv = nv.asCullVisitor();
     if (!cv || !nv.validNodeMask(*this))
     {

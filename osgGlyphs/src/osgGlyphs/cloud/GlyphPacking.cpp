@@ -294,15 +294,23 @@ void GlyphCloud::updateScalarMapping()
     _scalarToColormapUniform->set(mapping);
 }
 
+float GlyphCloud::decodeRadius(unsigned int i) const
+{
+    const uint16_t halfRadius = i < _numGlyphs ? static_cast<uint16_t>((*_packed)[i] & 0xffffu) : 0;
+    if (halfRadius == 0)
+        return 0.0f;
+    const float relative = _compressedAttributes ? detail::fromHalf(halfRadius) : (*_unpacked)[i].x();
+    return relative * _radiusScale;
+}
+
 osg::BoundingBox GlyphCloud::computeGlyphBox(unsigned int i) const
 {
     osg::BoundingBox box;
-    const uint16_t halfRadius = i < _numGlyphs ? static_cast<uint16_t>((*_packed)[i] & 0xffffu) : 0;
-    if (halfRadius == 0)
+    const float decoded = decodeRadius(i);
+    if (decoded == 0.0f)
         return box;
     const float widest = _shape == GlyphShape::Arrow ? std::max(_arrowParams.y(), 1.0f) : 1.0f;
-    const float relative = _compressedAttributes ? detail::fromHalf(halfRadius) : (*_unpacked)[i].x();
-    const float radius = relative * _radiusScale * widest;
+    const float radius = decoded * widest;
     const osg::Vec3 pad(radius, radius, radius);
     const osg::Vec3& p = (*_positions)[i];
     if (!hasVectorShape())

@@ -1,0 +1,185 @@
+// The ray casts of shaders/osgGlyphs, on the CPU: same names, same steps, doubles for floats.
+#include "GlyphRayCast.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace osgGlyphs;
+using namespace osgGlyphs::detail;
+
+namespace
+{
+
+const double INFINITE_DISTANCE = 1.0e300;
+
+using glm::dvec2;
+using glm::dvec3;
+
+/** sphere.glsl: where the ray enters and leaves the sphere; false if it misses. */
+bool intersectSphere(const dvec3& origin, const dvec3& direction, const dvec3& centre, double radius,
+                     double& tEnter, double& tLeave)
+{
+    const dvec3 m = origin - centre;
+    const double b = glm::dot(m, direction);
+    const dvec3 closest = m - b * direction;
+    const double h2 = radius * radius - glm::dot(closest, closest);
+    if (h2 < 0.0)
+        return false;
+    const double h = std::sqrt(h2);
+    tEnter = -b - h;
+    tLeave = -b + h;
+    return true;
+}
+
+/** vector.glsl: two unit vectors that complete the axis to a right-handed orthonormal frame. */
+void axisFrame(const dvec3& axis, dvec3& u, dvec3& v)
+{
+    const dvec3 helper = std::abs(axis.x) < 0.9 ? dvec3(1.0, 0.0, 0.0) : dvec3(0.0, 1.0, 0.0);
+    u = glm::normalize(glm::cross(helper, axis));
+    v = glm::cross(axis, u);
+}
+
+void hitDisc(const dvec3& o, const dvec3& d, double z, double radius, double facing, double& tBest,
+             dvec3& nBest)
+{
+    if (std::abs(d.z) < 1e-12)
+        return;
+    const double t = (z - o.z) / d.z;
+    const dvec2 p = dvec2(o) + dvec2(d) * t;
+    if (t >= 0.0 && t < tBest && glm::dot(p, p) <= radius * radius)
+    {
+        tBest = t;
+        nBest = dvec3(0.0, 0.0, facing);
+    }
+}
+
+/** The side of a cylinder or truncated cone: radius r0 at z0 shrinking linearly to r1 at z1. */
+void hitSide(const dvec3& o, const dvec3& d, double z0, double r0, double z1, double r1, double& tBest,
+             dvec3& nBest)
+{
+    const double slope = (r1 - r0) / (z1 - z0);
+    const double radiusAtOrigin = r0 + slope * (o.z - z0);
+    const double a = glm::dot(dvec2(d), dvec2(d)) - slope * slope * d.z * d.z;
+    const double b = glm::dot(dvec2(o), dvec2(d)) - slope * radiusAtOrigin * d.z;
+    const double c = glm::dot(dvec2(o), dvec2(o)) - radiusAtOrigin * radiusAtOrigin;
+    double roots[2];
+    if (std::abs(a) < 1e-12)
+    {
+        if (std::abs(b) < 1e-12)
+            return;
+        roots[0] = roots[1] = -c / (2.0 * b);
+    }
+    else
+    {
+        const double discriminant = b * b - a * c;
+        if (discriminant < 0.0)
+            return;
+        const double s = std::sqrt(discriminant);
+        roots[0] = std::min((-b - s) / a, (-b + s) / a);
+        roots[1] = std::max((-b - s) / a, (-b + s) / a);
+    }
+    for (double t : roots)
+    {
+        const double z = o.z + d.z * t;
+        const double radiusAtHit = r0 + slope * (z - z0);
+        if (t >= 0.0 && t < tBest && z >= z0 && z <= z1 && radiusAtHit >= 0.0)
+        {
+            const dvec2 p = dvec2(o) + dvec2(d) * t;
+            tBest = t;
+            nBest = glm::normalize(dvec3(p, -slope * radiusAtHit));
+            return;
+        }
+    }
+}
+
+bool insideSide(const dvec3& p, double z0, double r0, double z1, double r1)
+{
+    const double r = r0 + (r1 - r0) * ((p.z - z0) / (z1 - z0));
+    return p.z >= z0 && p.z <= z1 && glm::dot(dvec2(p), dvec2(p)) < r * r;
+}
+
+bool insideShape(const GlyphSolid& glyph, const dvec3& p)
+{
+    const double radius = glyph.radius, len = glyph.length;
+    switch (glyph.shape)
+    {
+    case GlyphShape::Cylinder:
+        return insideSide(p, 0.0, radius, len, radius);
+    case GlyphShape::Cone:
+        return insideSide(p, 0.0, radius, len, 0.0);
+    default:
+    {
+        const double headStart = len * (1.0 - glyph.arrowParams.x);
+        return insideSide(p, 0.0, radius, headStart, radius) ||
+               insideSide(p, headStart, radius * glyph.arrowParams.y, len, 0.0);
+    }
+    }
+}
+
+/** The nearest hit (t >= 0) of a ray with the shape, and its normal; tBest stays infinite on a miss. */
+void intersectShape(const GlyphSolid& glyph, const dvec3& o, const dvec3& d, double& tBest, dvec3& normal)
+{
+    const double radius = glyph.radius, len = glyph.length;
+    tBest = INFINITE_DISTANCE;
+    normal = dvec3(0.0, 0.0, 1.0);
+    switch (glyph.shape)
+    {
+    case GlyphShape::Cylinder:
+        hitSide(o, d, 0.0, radius, len, radius, tBest, normal);
+        hitDisc(o, d, 0.0, radius, -1.0, tBest, normal);
+        hitDisc(o, d, len, radius, 1.0, tBest, normal);
+        break;
+    case GlyphShape::Cone:
+        hitSide(o, d, 0.0, radius, len, 0.0, tBest, normal);
+        hitDisc(o, d, 0.0, radius, -1.0, tBest, normal);
+        break;
+    default:
+    {
+        const double headStart = len * (1.0 - glyph.arrowParams.x);
+        const double headRadius = radius * glyph.arrowParams.y;
+        hitSide(o, d, 0.0, radius, headStart, radius, tBest, normal);
+        hitDisc(o, d, 0.0, radius, -1.0, tBest, normal);
+        hitSide(o, d, headStart, headRadius, len, 0.0, tBest, normal);
+        hitDisc(o, d, headStart, headRadius, -1.0, tBest, normal);
+    }
+    }
+}
+
+}
+
+bool osgGlyphs::detail::castRay(const GlyphSolid& glyph, const dvec3& origin, const dvec3& direction,
+                                double& t, dvec3& normal)
+{
+    if (glyph.shape == GlyphShape::Sphere)
+    {
+        double tEnter, tLeave;
+        if (!intersectSphere(origin, direction, glyph.base, glyph.radius, tEnter, tLeave) || tLeave < 0.0)
+            return false;
+        t = std::max(tEnter, 0.0);
+        normal = tEnter >= 0.0 ? (origin + direction * t - glyph.base) / glyph.radius : -direction;
+        return true;
+    }
+    dvec3 u, v;
+    axisFrame(glyph.axis, u, v);
+    dvec3 relative = origin - glyph.base;
+    if (insideShape(glyph,
+                    dvec3(glm::dot(relative, u), glm::dot(relative, v), glm::dot(relative, glyph.axis))))
+    {
+        t = 0.0;
+        normal = -direction;
+        return true;
+    }
+    // Solve from a point just before the glyph, where the quadratics are well conditioned.
+    const double reach = glyph.length + 2.0 * glyph.radius * std::max(glyph.arrowParams.y, 1.0);
+    const double start = std::max(glm::dot(-relative, direction) - reach, 0.0);
+    relative += direction * start;
+    const dvec3 o(glm::dot(relative, u), glm::dot(relative, v), glm::dot(relative, glyph.axis));
+    const dvec3 d(glm::dot(direction, u), glm::dot(direction, v), glm::dot(direction, glyph.axis));
+    dvec3 local;
+    intersectShape(glyph, o, d, t, local);
+    t += start;
+    normal = local.x * u + local.y * v + local.z * glyph.axis;
+    return t < INFINITE_DISTANCE;
+}
