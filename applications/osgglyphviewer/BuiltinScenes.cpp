@@ -78,20 +78,22 @@ osg::ref_ptr<ViewerScene> createDefaultScene(const ViewerOptions& options, std::
     cloud->setScalars(scalars.get());
     osgGlyphsData::applyGlyphStyle(*cloud, options.mapping);
 
-    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-    geode->addDrawable(cloud.get());
+    // Drawables as children of a group, which osgUtil::IntersectionVisitor picks through their
+    // accept() (it hands a Geode's drawables to the intersectors directly).
+    osg::ref_ptr<osg::Group> group = new osg::Group;
+    group->addChild(cloud.get());
     osg::ref_ptr<osg::ShapeDrawable> box =
         new osg::ShapeDrawable(new osg::Box(osg::Vec3(0.0f, 0.0f, -1.0f), 3.0f, 3.0f, 0.2f));
     box->setColor(osg::Vec4(0.75f, 0.75f, 0.75f, 1.0f));
-    geode->addDrawable(box.get());
+    group->addChild(box.get());
     osg::ref_ptr<osg::ShapeDrawable> sphere =
         new osg::ShapeDrawable(new osg::Sphere(osg::Vec3(0.0f, 0.0f, 0.3f), 0.8f));
     sphere->setColor(osg::Vec4(0.85f, 0.3f, 0.25f, 1.0f));
-    geode->addDrawable(sphere.get());
+    group->addChild(sphere.get());
 
     const auto range = std::minmax_element(scalars->begin(), scalars->end());
     osg::ref_ptr<ViewerScene> scene =
-        createFixedScene(geode.get(), makeScalarKey("z", options.mapping, *range.first, *range.second));
+        createFixedScene(group.get(), makeScalarKey("z", options.mapping, *range.first, *range.second));
     CameraView view;
     view.eye.set(3.5, -12.5, 5.0); // far enough back for the whole cube of spheres
     view.center.set(0.0, 0.0, 0.0);
@@ -113,10 +115,8 @@ osg::ref_ptr<ViewerScene> createRandomScene(const ViewerOptions& options, std::s
     random.lengthScale = options.mapping.lengthScale;
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(random);
     osgGlyphsData::applyGlyphStyle(*cloud, options.mapping);
-    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-    geode->addDrawable(cloud.get());
     osg::ref_ptr<ViewerScene> scene =
-        createFixedScene(geode.get(), makeScalarKey("random value", options.mapping, 0.0f, 1.0f));
+        createFixedScene(cloud.get(), makeScalarKey("random value", options.mapping, 0.0f, 1.0f));
     scene->setDescription("random dataset: " + std::to_string(random.count) + " " +
                           osgGlyphs::getShapeName(random.shape) + "s in the unit cube, seed " +
                           std::to_string(random.seed) + ", radius " + std::to_string(cloud->getRadius()));

@@ -2,6 +2,7 @@
 
 #include "DatasetLoading.h"
 #include "ViewerCamera.h"
+#include "ViewerPicking.h"
 
 #include <osgGlyphs/GlyphStateCache>
 #include <osgGlyphsHeadless/DepthImage>
@@ -144,6 +145,12 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
                       << ") in " << ms << " ms" << std::endl;
         if (options.output.empty() && options.depthOutput.empty())
             std::cout << PROGRAM << ": rendered " << size << " in " << ms << " ms" << std::endl;
+        if (options.hasPick)
+        {
+            // Through the pixel's centre; window rows count from the bottom.
+            const double x = options.pickX + 0.5, y = options.height - (options.pickY + 0.5);
+            std::cout << formatPick(pickGlyph(*viewer, *scene.getContent(), x, y)) << std::endl;
+        }
     }
     if (options.frames > 0)
         std::cout << formatFrameTimes(times) << std::endl;

@@ -208,6 +208,18 @@ bool readOutputOptions(osg::ArgumentParser& arguments, ViewerOptions& options, s
         }
         options.frames = static_cast<unsigned int>(frames);
     }
+    if (arguments.read("--pick", options.pickX, options.pickY))
+    {
+        options.hasPick = true;
+        if (options.pickX < 0 || options.pickY < 0 || options.pickX >= options.width ||
+            options.pickY >= options.height)
+        {
+            error = "--pick " + std::to_string(options.pickX) + " " + std::to_string(options.pickY) +
+                    ": not a pixel of the " + std::to_string(options.width) + "x" +
+                    std::to_string(options.height) + " image";
+            return false;
+        }
+    }
     return true;
 }
 
@@ -289,6 +301,11 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--follow-timeout <s>",
                                "Offscreen --follow: give up when no new frame completes for s seconds "
                                "(default 60).");
+    usage.addCommandLineOption("--pick <px> <py>",
+                               "With --offscreen: after rendering, print 'pick glyph=<index> x=<x> y=<y> "
+                               "z=<z>', the glyph under pixel (px, py) of the image counted from its top "
+                               "left corner (its index in the file's frame) and the world point of its "
+                               "surface there, or 'pick none'. In a window, a click (without a drag) picks.");
     usage.addCommandLineOption("-h or --help", "Display this help: options and keys.");
 }
 
@@ -325,6 +342,11 @@ bool readViewerOptions(osg::ArgumentParser& arguments, ViewerOptions& options, s
     if (options.follow && options.file.empty())
     {
         error = "--follow needs a file";
+        return false;
+    }
+    if (options.hasPick && !options.offscreen)
+    {
+        error = "--pick needs --offscreen (in a window, click to pick)";
         return false;
     }
     return true;

@@ -59,6 +59,9 @@ struct ViewerOptions
     std::string output;
     std::string depthOutput;
     unsigned int frames = 0; // --frames K; 0: one frame headless, run until closed in a window
+    bool hasPick = false;    // --pick PX PY: the glyph under that pixel, counted from the top left
+    int pickX = 0;
+    int pickY = 0;
 };
 
 /** Lists every option and the keys of the window in usage. */

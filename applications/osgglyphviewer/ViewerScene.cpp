@@ -145,9 +145,7 @@ osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, std::
         osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = mapper.createCloud(*dataset->getFrame(frame), frameError);
         if (!cloud)
             return osg::ref_ptr<osg::Node>();
-        osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-        geode->addDrawable(cloud.get());
-        return osg::ref_ptr<osg::Node>(geode);
+        return osg::ref_ptr<osg::Node>(cloud); // not in a Geode: see BuiltinScenes.cpp
     };
     osg::ref_ptr<ViewerScene> scene = new ViewerScene(source, dataset->getNumFrames(), mapper.getColorKey());
     if (follower)

@@ -14,6 +14,9 @@
 
 out vec4 color;
 
+// The selection's pass (GlyphCloud::setSelection): a tint and its strength; 0 otherwise.
+uniform vec4 osgGlyphs_highlight;
+
 #ifdef GL_ARB_conservative_depth
 // The surface lies at or behind the primitive, which every technique places at the glyph's
 // nearest depth: a driver may reject fragments behind the depth buffer before ray-casting them.
@@ -148,4 +151,5 @@ void main()
         discard; // beyond the far plane, where fixed-function geometry is clipped too
     gl_FragDepth = windowDepth(ndcZ);
     color = vec4(shade(fragColor.rgb, position, normal, -direction), fragColor.a);
+    color.rgb = mix(color.rgb, osgGlyphs_highlight.rgb, osgGlyphs_highlight.a);
 }

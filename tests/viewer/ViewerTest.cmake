@@ -2,8 +2,8 @@
 #   cmake -DCASE=<case> -DVIEWER=<osgglyphviewer> -DCHECK=<osgglyphviewer_image_check>
 #         -DDATA_DIR=<data> -DWORK_DIR=<scratch> -P ViewerTest.cmake
 # Cases: render, cone, frame, malformed, unknown_column, unknown_option, frames, default, help,
-# stray_shaders, broken_shader, hidden_cones, hidden_radius, hidden_sub_pixel, hidden_bounds, far,
-# vast, clip, radius_column.
+# stray_shaders, broken_shader, pick, hidden_cones, hidden_radius, hidden_sub_pixel, hidden_bounds,
+# far, vast, clip, radius_column.
 cmake_minimum_required(VERSION 3.25)
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -102,8 +102,8 @@ elseif(CASE STREQUAL "default")
 elseif(CASE STREQUAL "help")
     expect_success(--help)
     foreach(option --format --frame --random --seed --position --radius --radius-by --color-by --colormap --range
-            --vector --length-scale --glyph --unlit --technique --size --camera --fov --background --clip --clip-cap --offscreen
-            --headless --output --depth-output --frames)
+            --vector --length-scale --glyph --unlit --technique --size --camera --fov --background --clip --clip-cap
+            --offscreen --headless --output --depth-output --frames --pick)
         if(NOT out MATCHES "\n  ${option} ")
             message(FATAL_ERROR "--help does not list ${option}")
         endif()
@@ -176,6 +176,33 @@ elseif(CASE STREQUAL "radius_column")
         message(FATAL_ERROR "radii and halved diameters drew different pictures")
     endif()
     check(differ radius.png neither.png 0.01)
+elseif(CASE STREQUAL "pick")
+    # 161x121 pixels: pixel (80, 60) is centred on the view axis, which meets atom 1 (glyph 0, radius
+    # 0.5 at the origin, seen from z = 5) at its front point (0, 0, 0.5).
+    set(pick_view --size 161 121 --camera 0 0 5 0 0 0 0 1 0 --fov 30 --radius 0.5 --offscreen)
+    expect_success(${spheres} ${pick_view} --pick 80 60)
+    if(NOT out MATCHES "\npick glyph=0 x=([^ ]+) y=([^ ]+) z=([^ \n]+)\n")
+        message(FATAL_ERROR "no 'pick glyph=0 x=.. y=.. z=..' line")
+    endif()
+    set(x ${CMAKE_MATCH_1})
+    set(y ${CMAKE_MATCH_2})
+    set(z ${CMAKE_MATCH_3})
+    if(NOT (x GREATER -1e-9 AND x LESS 1e-9 AND y GREATER -1e-9 AND y LESS 1e-9 AND z GREATER 0.499999999
+            AND z LESS 0.500000001))
+        message(FATAL_ERROR "picked (${x}, ${y}, ${z}), not (0, 0, 0.5)")
+    endif()
+    # Atom 2 at (1, 0.7, 0.5) projects to about (130.7, 25.4): its front cap, z in (0.9, 1].
+    expect_success(${spheres} ${pick_view} --pick 130 25)
+    if(NOT out MATCHES "\npick glyph=1 x=[^ ]+ y=[^ ]+ z=([^ \n]+)\n" OR NOT CMAKE_MATCH_1 GREATER 0.9
+            OR CMAKE_MATCH_1 GREATER 1.0)
+        message(FATAL_ERROR "pixel (130, 25) does not pick the front of glyph 1")
+    endif()
+    expect_success(${spheres} ${pick_view} --pick 0 0)
+    if(NOT out MATCHES "\npick none\n")
+        message(FATAL_ERROR "a background pixel picks something")
+    endif()
+    expect_failure("--pick needs --offscreen" ${spheres} --pick 1 1)
+    expect_failure("--pick 161 0: not a pixel of the 161x121 image" ${spheres} ${pick_view} --pick 161 0)
 elseif(CASE STREQUAL "hidden_cones")
     expect_warning("no glyph is drawn: every glyph is skipped \\(3 of 3 have a zero vector"
         "${DATA_DIR}/still.csv" --glyph cone --size 160 120)

@@ -6,6 +6,7 @@
 #include "../state/ViewState.h"
 #include "FlattenedTransforms.h"
 
+#include <osg/Depth>
 #include <osg/Uniform>
 #include <osgUtil/CullVisitor>
 #include <osgUtil/IntersectionVisitor>
@@ -40,7 +41,8 @@ GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
       _anchor(other._anchor), _lengthScale(other._lengthScale), _uniformLength(other._uniformLength),
       _arrowParams(other._arrowParams), _lit(other._lit), _compressedAttributes(other._compressedAttributes),
       _autoRange(other._autoRange), _rangeMin(other._rangeMin), _rangeMax(other._rangeMax),
-      _material(other._material), _culling(other._culling), _cullingChunkSize(other._cullingChunkSize)
+      _material(other._material), _culling(other._culling), _cullingChunkSize(other._cullingChunkSize),
+      _selection(other._selection), _selectionColor(other._selectionColor)
 {
     initialize();
 }
@@ -52,6 +54,8 @@ void GlyphCloud::initialize()
     setUseVertexBufferObjects(true);
     if (!_technique)
         _technique = createTechnique(DEFAULT_GLYPH_TECHNIQUE);
+    _selectionElements = new osg::DrawElementsUInt(GL_POINTS);
+    _selectionElements->setElementBufferObject(new osg::ElementBufferObject);
     _packed = new osg::UIntArray;
     _packed->setPreserveDataType(true); // an integer attribute: glVertexAttribIPointer
     _unpacked = new osg::Vec2Array;
@@ -296,6 +300,21 @@ void GlyphCloud::updateChunks()
         _numGlyphs, [this](unsigned int i) { return computeGlyphBox(i); }, _cullingChunkSize));
 }
 
+void GlyphCloud::setSelection(const std::vector<unsigned int>& glyphs)
+{
+    _selection = glyphs;
+    updateSelectionElements();
+}
+
+void GlyphCloud::updateSelectionElements()
+{
+    _selectionElements->clear();
+    for (unsigned int glyph : _selection)
+        if (glyph < _numGlyphs)
+            _selectionElements->push_back(glyph);
+    _selectionElements->dirty();
+}
+
 void GlyphCloud::dirtyGlyphs()
 {
     updateGlyphs();
@@ -449,14 +468,11 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
     const std::shared_ptr<const detail::GlyphChunks> chunks = _chunks;
     osg::State& state = *renderInfo.getState();
     GlyphCullingStatistics& statistics = _cullingStatistics[state.getContextID()];
-    // A display list would keep one frame's choice of chunks.
-    if (!chunks || !getEffectiveTechnique()->supportsCulling() || (_useDisplayList && _supportsDisplayList))
-    {
-        statistics = GlyphCullingStatistics();
-        osg::Geometry::drawImplementation(renderInfo);
-        return;
-    }
-    // osg::Geometry::drawImplementation, with the chunks that may be seen as its primitives.
+    // A display list would keep one frame's choice of chunks, and selection.
+    const bool displayList = _useDisplayList && _supportsDisplayList;
+    const bool culling = chunks && getEffectiveTechnique()->supportsCulling() && !displayList;
+    // osg::Geometry::drawImplementation, with the chunks that may be seen as its primitives, and
+    // the selection drawn again.
     const bool usingVertexBufferObjects =
         state.useVertexBufferObject(_supportsVertexBufferObjects && _useVertexBufferObjects);
     const bool usingVertexArrayObjects =
@@ -464,7 +480,15 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
     osg::VertexArrayState* vas = state.getCurrentVertexArrayState();
     vas->setVertexBufferObjectSupported(usingVertexBufferObjects);
     drawVertexArraysImplementation(renderInfo);
-    statistics = detail::drawChunks(renderInfo, *chunks, _culling, usingVertexBufferObjects);
+    if (culling)
+        statistics = detail::drawChunks(renderInfo, *chunks, _culling, usingVertexBufferObjects);
+    else
+    {
+        statistics = GlyphCullingStatistics();
+        drawPrimitivesImplementation(renderInfo);
+    }
+    if (!displayList)
+        drawSelection(state, usingVertexBufferObjects);
     if (usingVertexBufferObjects && !usingVertexArrayObjects)
     {
         vas->unbindVertexBufferObject();
@@ -472,9 +496,30 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
     }
 }
 
+void GlyphCloud::drawSelection(osg::State& state, bool usingVertexBufferObjects) const
+{
+    const osg::Program::PerContextProgram* program = state.getLastAppliedProgramObject();
+    if (_selectionElements->empty() || !getEffectiveTechnique()->supportsCulling() || !program)
+        return;
+    static const unsigned int highlightID = osg::Uniform::getNameID("osgGlyphs_highlight");
+    const GLint highlight = program->getUniformLocation(highlightID);
+    if (highlight < 0)
+        return;
+    osg::GLExtensions* ext = state.get<osg::GLExtensions>();
+    const osg::Depth* depth =
+        dynamic_cast<const osg::Depth*>(state.getLastAppliedAttribute(osg::StateAttribute::DEPTH));
+    ext->glUniform4f(highlight, _selectionColor.r(), _selectionColor.g(), _selectionColor.b(),
+                     _selectionColor.a());
+    glDepthFunc(GL_LEQUAL); // the same program draws the same depth again
+    _selectionElements->draw(state, usingVertexBufferObjects);
+    glDepthFunc(depth ? GLenum(depth->getFunction()) : GLenum(GL_LESS));
+    ext->glUniform4f(highlight, 0.0f, 0.0f, 0.0f, 0.0f);
+}
+
 void GlyphCloud::resizeGLObjectBuffers(unsigned int maxSize)
 {
     osg::Geometry::resizeGLObjectBuffers(maxSize);
+    _selectionElements->resizeGLObjectBuffers(maxSize);
     _cullingStatistics.resize(maxSize);
     _variantStateSet->resizeGLObjectBuffers(maxSize);
     _cloudStateSet->resizeGLObjectBuffers(maxSize);
@@ -483,6 +528,7 @@ void GlyphCloud::resizeGLObjectBuffers(unsigned int maxSize)
 void GlyphCloud::releaseGLObjects(osg::State* state) const
 {
     osg::Geometry::releaseGLObjects(state);
+    _selectionElements->releaseGLObjects(state);
     _variantStateSet->releaseGLObjects(state);
     _cloudStateSet->releaseGLObjects(state);
 }

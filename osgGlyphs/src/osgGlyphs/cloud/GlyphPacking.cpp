@@ -94,6 +94,7 @@ void GlyphCloud::updateGlyphs(bool report)
         _skipped.assign(count, 0);
         _packed->assign(count, 0u);
         _unpacked->assign(_compressedAttributes ? 0 : count, osg::Vec2());
+        updateSelectionElements(); // the selection's pass reads only glyphs the arrays hold
     }
     if (scalars)
         updateDataRange();
