@@ -2,6 +2,7 @@
 
 #include "ViewerCamera.h"
 #include "ViewerEventHandler.h"
+#include "ViewerPicking.h"
 
 #include <osgGA/StateSetManipulator>
 #include <osgGA/TrackballManipulator>
@@ -75,6 +76,9 @@ int runInteractive(ViewerScene& scene, const ViewerOptions& options, osg::Applic
     scene.addLegend(camera, options.background);
     viewer->setSceneData(scene.getRoot());
     osg::ref_ptr<ViewerEventHandler> keys = new ViewerEventHandler(&scene);
+    osgText::Text* pickText = nullptr;
+    scene.getRoot()->addChild(createPickHud(options.width, options.height, options.background, pickText));
+    keys->setPickText(pickText);
     for (const auto& handler : createHandlers(keys.get(), camera->getOrCreateStateSet(), usage))
         viewer->addEventHandler(handler.get());
 

@@ -28,3 +28,26 @@ std::string formatPick(const GlyphPick& pick)
          << " x=" << pick.world.x() << " y=" << pick.world.y() << " z=" << pick.world.z();
     return text.str();
 }
+
+osg::ref_ptr<osg::Camera> createPickHud(int width, int height, const osg::Vec4& background,
+                                        osgText::Text*& text)
+{
+    osg::ref_ptr<osg::Camera> hud = new osg::Camera;
+    hud->setReferenceFrame(osg::Transform::ABSOLUTE_RF);
+    hud->setProjectionMatrixAsOrtho2D(0.0, width, 0.0, height);
+    hud->setViewMatrix(osg::Matrixd::identity());
+    hud->setClearMask(GL_DEPTH_BUFFER_BIT);
+    hud->setRenderOrder(osg::Camera::POST_RENDER);
+    hud->setAllowEventFocus(false);
+    hud->getOrCreateStateSet()->setMode(GL_LIGHTING, osg::StateAttribute::OFF);
+    const float luminance = 0.3f * background.r() + 0.6f * background.g() + 0.1f * background.b();
+    osg::ref_ptr<osgText::Text> label = new osgText::Text;
+    label->setDataVariance(osg::Object::DYNAMIC);
+    label->setCharacterSize(14.0f);
+    label->setAlignment(osgText::Text::LEFT_TOP);
+    label->setPosition(osg::Vec3(10.0f, float(height) - 10.0f, 0.0f));
+    label->setColor(luminance > 0.5f ? osg::Vec4(0.0f, 0.0f, 0.0f, 1.0f) : osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f));
+    hud->addChild(label.get());
+    text = label.get();
+    return hud;
+}

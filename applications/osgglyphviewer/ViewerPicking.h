@@ -5,6 +5,7 @@
 
 #include <osgGlyphs/GlyphCloud>
 
+#include <osgText/Text>
 #include <osgViewer/View>
 
 #include <string>
@@ -26,5 +27,9 @@ GlyphPick pickGlyph(osgViewer::View& view, osg::Node& content, double x, double 
 
 /** "pick glyph=<index> x=<x> y=<y> z=<z>" with every digit of the doubles, or "pick none". */
 std::string formatPick(const GlyphPick& pick);
+
+/** A HUD of width x height pixels whose text, in the top left corner, shows the picked point. */
+osg::ref_ptr<osg::Camera> createPickHud(int width, int height, const osg::Vec4& background,
+                                        osgText::Text*& text);
 
 #endif

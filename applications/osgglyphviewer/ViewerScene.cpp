@@ -4,6 +4,7 @@
 #include "ColorLegend.h"
 #include "DatasetLoading.h"
 #include "ViewerCamera.h"
+#include "ViewerText.h"
 
 #include <chrono>
 #include <iostream>
@@ -67,6 +68,32 @@ void ViewerScene::addLegend(osg::Camera* camera, const osg::Vec4& background)
     osg::ref_ptr<osg::Camera> legend = createColorLegend(_key, camera, background);
     if (legend.valid())
         _root->addChild(legend.get());
+}
+
+std::string ViewerScene::describePoint(unsigned int index) const
+{
+    if (_describer)
+        return _describer(_frame, index);
+    const osgGlyphs::GlyphCloud* cloud = getCloud();
+    if (!cloud || !cloud->getPositions() || index >= cloud->getPositions()->size())
+        return std::string();
+    const osg::Vec3d p = cloud->getOrigin() + osg::Vec3d((*cloud->getPositions())[index]);
+    return "x = " + formatFullValue(p.x()) + "\ny = " + formatFullValue(p.y()) +
+           "\nz = " + formatFullValue(p.z()) + "\n";
+}
+
+osgGlyphs::GlyphCloud* ViewerScene::getCloud() const
+{
+    for (unsigned int i = 0; i < _content->getNumChildren(); ++i)
+    {
+        osg::Group* group = _content->getChild(i)->asGroup();
+        osg::Node* nodes[] = {_content->getChild(i),
+                              group && group->getNumChildren() ? group->getChild(0) : nullptr};
+        for (osg::Node* node : nodes)
+            if (auto* cloud = dynamic_cast<osgGlyphs::GlyphCloud*>(node))
+                return cloud;
+    }
+    return nullptr;
 }
 
 void ViewerScene::setHomeView(const CameraView& view)
@@ -151,6 +178,22 @@ osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, std::
     if (follower)
         scene->setFollower([follower](std::size_t& added, std::string& pollError)
                            { return follower->poll(added, pollError); });
+    scene->setPointDescriber(
+        [dataset](std::size_t frame, unsigned int index)
+        {
+            const osgGlyphsData::PointData* points = dataset->getFrame(frame);
+            std::string text;
+            for (std::size_t column = 0;
+                 points && index < points->getNumPoints() && column < points->getNumColumns(); ++column)
+            {
+                const std::string& name = points->getColumnNames()[column];
+                const double value = points->getValue(column, index);
+                const std::vector<std::string>& labels = points->getColumnLabels(name);
+                const bool label = !labels.empty() && value >= 0.0 && value < double(labels.size());
+                text += name + " = " + (label ? labels[std::size_t(value)] : formatFullValue(value)) + "\n";
+            }
+            return text;
+        });
     const osgGlyphsData::PointData* data = dataset->getFrame(options.frame);
     scene->setDescription(options.file + ": " + std::to_string(dataset->getNumFrames()) + " frame" +
                           (dataset->getNumFrames() == 1 ? "" : "s") + " (" + dataset->getFormat() + "), " +

@@ -5,6 +5,7 @@
 
 #include "ViewerOptions.h"
 
+#include <osgGlyphs/GlyphCloud>
 #include <osgGlyphsData/GlyphMapping>
 
 #include <osg/Camera>
@@ -65,6 +66,15 @@ public:
     /** The scene's own view, or the content framed for a field of view and aspect ratio. */
     CameraView getHomeView(double fovY, double aspect);
 
+    /** Describes point index of a frame: a "name = value" line per column of the file. */
+    typedef std::function<std::string(std::size_t frame, unsigned int index)> PointDescriber;
+    void setPointDescriber(const PointDescriber& describer) { _describer = describer; }
+    /** The point's columns in the current frame; without a file, its glyph's position. */
+    std::string describePoint(unsigned int index) const;
+
+    /** The glyphs of the current frame: the content's cloud, where it is one. */
+    osgGlyphs::GlyphCloud* getCloud() const;
+
     /** One line about the data and how it is drawn, for the console. */
     void setDescription(const std::string& description) { _description = description; }
     const std::string& getDescription() const { return _description; }
@@ -84,6 +94,7 @@ protected:
     bool _hasHomeView = false;
     CameraView _homeView;
     std::string _description;
+    PointDescriber _describer;
 };
 
 /** A perspective projection for a view: near and far planes at a thousandth and a thousand times

@@ -24,4 +24,12 @@ inline std::string formatValue(float value)
     return text;
 }
 
+/** A value of a file with its digits, up to 10 ("0.2297", "0.3", "4512345.678"). */
+inline std::string formatFullValue(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.10g", value);
+    return text;
+}
+
 #endif

@@ -3,7 +3,7 @@
 #   InteractiveViewerTest.sh <osgglyphviewer> <osgglyphviewer_image_check> <data dir> <work dir>
 # Opens the viewer on spheres.lammpstrj (WriteViewerTestData.cmake) and takes screenshots with
 # its ScreenCaptureHandler key c: as it opens, after l (unlit), after n (next frame) and after a
-# mouse drag (trackball). Checks that each shows glyphs and that each step changed the picture.
+# mouse drag (trackball); a click picks. Checks that each shows glyphs and that each step changed the picture.
 # Then a shader on OSG's data path that does not compile: after r, the viewer prints one line and
 # stays open, after its removal and r it draws again; Escape closes it with exit code 0. Last, the
 # viewer started with that shader prints the line and exits by itself with exit code 1.
@@ -38,10 +38,18 @@ xdotool key l && sleep 0.5
 unlit=$(screenshot 1) || fail "no screenshot after l"
 xdotool key n && sleep 0.5
 next=$(screenshot 2) || fail "no screenshot after n"
+# A click picks: a pick line, and a picked glyph drawn tinted and its values in the HUD.
+xdotool mousemove --window "$window" 200 150 click 1 && sleep 0.5
+pick_line=$(grep -E "^osgglyphviewer: pick (glyph=[0-9]+ x=[^ ]+ y=[^ ]+ z=[^ ]+|none)$" viewer.log | tail -n 1)
+[[ -n $pick_line ]] || fail "a click printed no pick line"
+picked=$(screenshot 3) || fail "no screenshot after the click"
+if [[ $pick_line != *none ]]; then
+    "$check" differ "$next" "$picked" 0.001 || fail "the picked glyph is not highlighted"
+fi
 xdotool mousemove --window "$window" 200 150 mousedown 1 \
     mousemove --window "$window" 240 170 sleep 0.2 mousemove --window "$window" 280 190 sleep 0.2 mouseup 1
 sleep 0.5
-dragged=$(screenshot 3) || fail "no screenshot after dragging"
+dragged=$(screenshot 4) || fail "no screenshot after dragging"
 
 for shot in "$lit" "$unlit" "$next" "$dragged"; do
     "$check" coverage "$shot" 0.03 || fail "$shot shows no glyphs"
@@ -59,7 +67,7 @@ grep -qF "$broken_line" viewer.log || fail "r with a broken shader did not print
 kill -0 "$viewer_pid" 2>/dev/null || fail "the viewer exited after r with a broken shader"
 rm shaders/osgGlyphs/sphere.glsl
 xdotool key r && sleep 0.5
-repaired=$(screenshot 4) || fail "no screenshot after repairing the shader"
+repaired=$(screenshot 5) || fail "no screenshot after repairing the shader"
 "$check" coverage "$repaired" 0.03 || fail "$repaired shows no glyphs after the repaired shader"
 close_with_escape
 
