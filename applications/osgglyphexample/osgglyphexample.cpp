@@ -12,7 +12,7 @@
 #include <osgGlyphsHeadless/OffscreenViewer>
 
 #include <osg/ArgumentParser>
-#include <osg/Geode>
+#include <osg/Group>
 #include <osg/ShapeDrawable>
 #include <osgDB/WriteFile>
 #include <osgGA/TrackballManipulator>
@@ -60,11 +60,12 @@ osg::ref_ptr<osg::Node> createScene()
         new osg::ShapeDrawable(new osg::Box(osg::Vec3(0.0f, 0.0f, -1.45f), 4.5f, 4.5f, 0.3f));
     box->setColor(osg::Vec4(0.8f, 0.8f, 0.75f, 1.0f));
 
-    // A GlyphCloud is an osg::Geometry: it goes into a Geode like any other drawable.
-    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-    geode->addDrawable(createHelix().get());
-    geode->addDrawable(box.get());
-    return geode;
+    // A GlyphCloud is an osg::Geometry: it goes into a Group like any other drawable (a Geode
+    // would draw it too, but OSG's intersectors would not pick its glyphs there).
+    osg::ref_ptr<osg::Group> group = new osg::Group;
+    group->addChild(createHelix().get());
+    group->addChild(box.get());
+    return group;
 }
 
 // Headless: an OffscreenViewer is an osgViewer::Viewer that renders into an off-screen
