@@ -30,6 +30,8 @@ endforeach()
 
 # The private dependencies are only needed while building osgGlyphs itself.
 if(NOT OSGGLYPHS_FIND_PUBLIC_ONLY)
+    # osgShadow: the viewer's --shadows and the shadow tests (the libraries do not use it).
+    osgglyphs_require(osgShadow openscenegraph-osgShadow ${_osgglyphs_osg_package})
     osgglyphs_require(OSMesa osmesa libosmesa6-dev)
     osgglyphs_require(EGL egl libegl-dev)
     osgglyphs_require(GLM glm libglm-dev)

@@ -10,6 +10,42 @@ vec2 tangentSlopes(float lateral, float z, float radius)
     return vec2(b - root, b + root) / a;
 }
 
+/** Whether the projection is an axis-aligned orthographic or perspective one (glFrustum, glOrtho,
+  * their shears included), for which the eye's z is the depth. Light-space perspective shadow
+  * maps (osgShadow's ViewDependentShadowMap) are not. */
+bool isAxisAlignedProjection()
+{
+    mat4 p = gl_ProjectionMatrix;
+    bool standardW = isOrthographic() ? p[3][3] == 1.0 : p[3][3] == 0.0 && p[2][3] == -1.0;
+    return p[0][1] == 0.0 && p[1][0] == 0.0 && p[0][3] == 0.0 && p[1][3] == 0.0 && standardW;
+}
+
+/** The two values s of the planes row - s * w of clip space that touch the sphere: the extent of
+  * the sphere along that row's coordinate in NDC, for any projective matrix, through the sphere's
+  * dual quadric [r^2 I - c c^T, -c; -c^T, -1]. The sphere must lie wholly in front of the eye. */
+vec2 tangentRange(vec4 row, vec4 w, vec3 center, float radius)
+{
+    float r2 = radius * radius;
+    vec4 c = vec4(center, 1.0);
+    float rowRow = r2 * dot(row.xyz, row.xyz) - dot(row, c) * dot(row, c);
+    float rowW = r2 * dot(row.xyz, w.xyz) - dot(row, c) * dot(w, c);
+    float wW = r2 * dot(w.xyz, w.xyz) - dot(w, c) * dot(w, c);
+    float root = sqrt(max(rowW * rowW - rowRow * wW, 0.0));
+    vec2 s = vec2(rowW - root, rowW + root) / wW;
+    return vec2(min(s.x, s.y), max(s.x, s.y));
+}
+
+/** sphereScreenBound under any projective matrix: the NDC box and nearest NDC depth. */
+bool projectiveSphereBound(vec3 center, float radius, out vec4 box, out float nearestNdcZ)
+{
+    mat4 rows = transpose(gl_ProjectionMatrix);
+    vec2 xs = tangentRange(rows[0], rows[3], center, radius);
+    vec2 ys = tangentRange(rows[1], rows[3], center, radius);
+    box = vec4(xs.x, ys.x, xs.y, ys.y);
+    nearestNdcZ = max(tangentRange(rows[2], rows[3], center, radius).x, -1.0);
+    return true;
+}
+
 /** The exact NDC rectangle (xmin, ymin, xmax, ymax) of the sphere's projection, and the NDC
   * depth of its nearest point. A sphere that crosses the near plane covers the whole view, so
   * its cut is drawn; one wholly behind the near plane returns false. */
@@ -25,6 +61,8 @@ bool sphereScreenBound(vec3 center, float radius, out vec4 box, out float neares
         return true;
     }
     mat4 p = gl_ProjectionMatrix;
+    if (!isAxisAlignedProjection())
+        return projectiveSphereBound(center, radius, box, nearestNdcZ);
     if (isOrthographic())
     {
         vec4 lo = p * vec4(center - vec3(radius, radius, 0.0), 1.0);

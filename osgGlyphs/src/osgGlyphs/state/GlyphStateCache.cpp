@@ -61,6 +61,26 @@ void osgGlyphs::setClipCaps(osg::StateSet& stateSet, bool capped)
     stateSet.setDefine(GLYPH_CLIP_CAPS_DEFINE, capped ? osg::StateAttribute::ON : osg::StateAttribute::OFF);
 }
 
+const char* const osgGlyphs::GLYPH_SHADOWS_DEFINE = "OSGGLYPHS_SHADOWS";
+
+void osgGlyphs::setGlyphShadows(osg::StateSet& stateSet, bool receive, unsigned int shadowTextureUnit)
+{
+    const unsigned int TEXGEN_UNITS = 8; // gl_EyePlaneS[] of the compatibility profile
+    if (receive && shadowTextureUnit >= TEXGEN_UNITS)
+    {
+        OSG_WARN << "osgGlyphs: setGlyphShadows: shadow texture unit " << shadowTextureUnit
+                 << " has no TexGen planes (units 0 to " << TEXGEN_UNITS - 1
+                 << " do); glyphs receive no shadows" << std::endl;
+        receive = false;
+    }
+    stateSet.setDefine(GLYPH_SHADOWS_DEFINE, receive ? osg::StateAttribute::ON : osg::StateAttribute::OFF);
+    if (!receive)
+        return;
+    const int unit = static_cast<int>(shadowTextureUnit);
+    stateSet.addUniform(new osg::Uniform("osgGlyphs_shadowMap", unit));
+    stateSet.addUniform(new osg::Uniform("osgGlyphs_shadowUnit", unit));
+}
+
 GlyphStateCache* GlyphStateCache::instance()
 {
     static osg::ref_ptr<GlyphStateCache> s_instance = new GlyphStateCache;
@@ -122,6 +142,8 @@ osg::ref_ptr<osg::StateSet> GlyphStateCache::createStateSet(const GlyphTechnique
     osg::ref_ptr<osg::StateSet> stateSet = new osg::StateSet;
     stateSet->setName(std::string("osgGlyphs ") + technique.getTechniqueName());
     stateSet->setAttributeAndModes(getProgramLocked(technique));
+    // Impostors face the camera: a culling of front faces, as shadow cameras OVERRIDE, removes them.
+    stateSet->setMode(GL_CULL_FACE, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
     for (const std::string& define : detail::getVariantDefines(variant))
         stateSet->setDefine(define);
     if (variant.colorMode == GlyphColorMode::Scalar)
