@@ -89,6 +89,8 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
     camera->setClearColor(options.background);
     scene.addLegend(camera, options.background);
     viewer->setSceneData(scene.getRoot());
+    if (scene.hasOwnLight())
+        viewer->setLightingMode(osg::View::NO_LIGHT);
 
     // The legend is drawn after the scene: depth and projection are read before it.
     osg::ref_ptr<osgGlyphsHeadless::FrameCapture> sceneCapture;

@@ -75,6 +75,8 @@ int runInteractive(ViewerScene& scene, const ViewerOptions& options, osg::Applic
     camera->setClearColor(options.background);
     scene.addLegend(camera, options.background);
     viewer->setSceneData(scene.getRoot());
+    if (scene.hasOwnLight())
+        viewer->setLightingMode(osg::View::NO_LIGHT);
     osg::ref_ptr<ViewerEventHandler> keys = new ViewerEventHandler(&scene);
     osgText::Text* pickText = nullptr;
     scene.getRoot()->addChild(createPickHud(options.width, options.height, options.background, pickText));

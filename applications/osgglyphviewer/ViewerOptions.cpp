@@ -167,6 +167,8 @@ bool readViewOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std
     }
     while (arguments.read("--clip-cap"))
         options.clipCaps = true;
+    while (arguments.read("--shadows"))
+        options.shadows = true;
     float r = 0.0f, g = 0.0f, b = 0.0f;
     if (arguments.read("--background", r, g, b))
     {
@@ -279,6 +281,9 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
                                "(osg::ClipPlane's convention); repeat for up to 8 planes.");
     usage.addCommandLineOption("--clip-cap", "Cap the cuts of --clip: cut glyphs show a solid face in the "
                                              "plane, as a sliced solid does.");
+    usage.addCommandLineOption("--shadows",
+                               "Cast shadows (osgShadow's ViewDependentShadowMap) from a light above "
+                               "(+z) onto a ground plane under the data and onto the glyphs.");
 
     usage.addCommandLineOption("--offscreen", "Render without a display (through OSMesa unless --headless "
                                               "says otherwise) instead of opening a window.");

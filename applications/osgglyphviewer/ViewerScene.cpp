@@ -3,6 +3,7 @@
 #include "BuiltinScenes.h"
 #include "ColorLegend.h"
 #include "DatasetLoading.h"
+#include "ShadowScene.h"
 #include "ViewerCamera.h"
 #include "ViewerText.h"
 
@@ -61,6 +62,25 @@ void ViewerScene::setClipPlanes(const std::vector<osg::Plane>& planes, bool capp
     for (unsigned int i = 0; i < planes.size(); ++i)
         _clipNode->addClipPlane(new osg::ClipPlane(i, planes[i]));
     osgGlyphs::setClipCaps(*_clipNode->getOrCreateStateSet(), capped);
+}
+
+void ViewerScene::setShadows(bool shadows)
+{
+    if (shadows == _shadowedScene.valid())
+        return;
+    if (shadows)
+    {
+        osg::ComputeBoundsVisitor bounds;
+        _content->accept(bounds);
+        _shadowedScene = createShadowScene(bounds.getBoundingBox());
+        _root->replaceChild(_clipNode.get(), _shadowedScene.get());
+        _shadowedScene->addChild(_clipNode.get());
+    }
+    else
+    {
+        _root->replaceChild(_shadowedScene.get(), _clipNode.get());
+        _shadowedScene = nullptr;
+    }
 }
 
 void ViewerScene::addLegend(osg::Camera* camera, const osg::Vec4& background)
@@ -223,5 +243,6 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
         return nullptr;
     scene->setLit(options.mapping.lit);
     scene->setClipPlanes(options.clipPlanes, options.clipCaps);
+    scene->setShadows(options.shadows);
     return scene;
 }

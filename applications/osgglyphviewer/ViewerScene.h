@@ -52,6 +52,12 @@ public:
      * glyphs show solid faces in the planes. */
     void setClipPlanes(const std::vector<osg::Plane>& planes, bool capped);
 
+    /** Puts the content under a shadowed scene with its own light and a ground plane just below
+     * the current frame (--shadows; createShadowScene), or takes it out. */
+    void setShadows(bool shadows);
+    /** Whether the scene has its own light, with which the view's headlight must be off. */
+    bool hasOwnLight() const { return _shadowedScene.valid(); }
+
     /** Lit or flat glyphs, for every glyph of the scene. */
     void setLit(bool lit);
     bool getLit() const { return _lit; }
@@ -89,7 +95,8 @@ protected:
     bool _lit = true;
     osgGlyphsData::ColorKey _key;
     osg::ref_ptr<osg::Group> _root;
-    osg::ref_ptr<osg::ClipNode> _clipNode; // between the root and the content
+    osg::ref_ptr<osg::ClipNode> _clipNode;   // between the root (or the shadowed scene) and the content
+    osg::ref_ptr<osg::Group> _shadowedScene; // between the root and the clip node, with --shadows
     osg::ref_ptr<osg::Group> _content;
     bool _hasHomeView = false;
     CameraView _homeView;

@@ -3,7 +3,7 @@
 #         -DDATA_DIR=<data> -DWORK_DIR=<scratch> -P ViewerTest.cmake
 # Cases: render, cone, frame, malformed, unknown_column, unknown_option, frames, default, help,
 # stray_shaders, broken_shader, pick, hidden_cones, hidden_radius, hidden_sub_pixel, hidden_bounds,
-# far, vast, clip, radius_column.
+# far, vast, clip, radius_column, shadows.
 cmake_minimum_required(VERSION 3.25)
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -103,7 +103,7 @@ elseif(CASE STREQUAL "help")
     expect_success(--help)
     foreach(option --format --frame --random --seed --position --radius --radius-by --color-by --colormap --range
             --vector --length-scale --glyph --unlit --technique --size --camera --fov --background --clip --clip-cap
-            --offscreen --headless --output --depth-output --frames --pick)
+            --shadows --offscreen --headless --output --depth-output --frames --pick)
         if(NOT out MATCHES "\n  ${option} ")
             message(FATAL_ERROR "--help does not list ${option}")
         endif()
@@ -155,6 +155,16 @@ elseif(CASE STREQUAL "clip")
         list(APPEND nine --clip 1 0 0 ${i})
     endforeach()
     expect_failure("--clip: at most 8 planes" ${spheres} --offscreen ${nine})
+elseif(CASE STREQUAL "shadows")
+    # From above and in front: the spheres, and with --shadows a ground plane below them with
+    # their shadows on it (coverage: pixels unlike the bottom-left corner, the plane's).
+    set(oblique --size 160 120 --camera 0 -5 4 0 0 0 0 0 1 --fov 40 --radius 0.5)
+    expect_success(${spheres} --output plain.png ${oblique})
+    expect_success(${spheres} --output shadows.png --shadows ${oblique})
+    check(coverage shadows.png 0.1)
+    check(differ plain.png shadows.png 0.3)
+    expect_success(--output builtin.png --shadows --size 160 120)
+    check(coverage builtin.png 0.1)
 elseif(CASE STREQUAL "radius_column")
     # Without --radius-by: a radius column gives the radii, else a diameter column halved.
     set(view_without_radius --size 160 120 --camera 0 0 5 0 0 0 0 1 0 --fov 30)
