@@ -341,6 +341,27 @@ TEST(GlyphProjection, SphereGlyphIsExactUnderAProjectionThatMixesEyeAxes)
     EXPECT_LE(depthDiffers, covered / 200) << "of " << covered << " covered pixels";
 }
 
+TEST(GlyphShadowsState, AUnitWithoutTexGenPlanesReceivesNothing)
+{
+    osg::ref_ptr<osg::StateSet> stateSet = new osg::StateSet;
+    osgGlyphs::setGlyphShadows(*stateSet, true, 8);
+    const osg::StateSet::DefinePair* define = stateSet->getDefinePair(osgGlyphs::GLYPH_SHADOWS_DEFINE);
+    ASSERT_NE(define, nullptr);
+    EXPECT_FALSE(define->second & osg::StateAttribute::ON);
+    EXPECT_EQ(stateSet->getUniform("osgGlyphs_shadowMap"), nullptr);
+
+    osgGlyphs::setGlyphShadows(*stateSet, true, 3);
+    int unit = -1;
+    ASSERT_NE(stateSet->getUniform("osgGlyphs_shadowMap"), nullptr);
+    stateSet->getUniform("osgGlyphs_shadowMap")->get(unit);
+    EXPECT_EQ(unit, 3);
+    EXPECT_TRUE(stateSet->getDefinePair(osgGlyphs::GLYPH_SHADOWS_DEFINE)->second & osg::StateAttribute::ON);
+
+    osgGlyphs::setGlyphShadows(*stateSet, false);
+    EXPECT_EQ(stateSet->getUniform("osgGlyphs_shadowMap"), nullptr);
+    EXPECT_FALSE(stateSet->getDefinePair(osgGlyphs::GLYPH_SHADOWS_DEFINE)->second & osg::StateAttribute::ON);
+}
+
 INSTANTIATE_TEST_SUITE_P(Techniques, GlyphShadows,
                          ::testing::Values(Technique::ShadowMap, Technique::ViewDependent,
                                            Technique::ViewDependentOrthographic),

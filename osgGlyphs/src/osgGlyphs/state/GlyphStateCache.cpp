@@ -75,7 +75,11 @@ void osgGlyphs::setGlyphShadows(osg::StateSet& stateSet, bool receive, unsigned 
     }
     stateSet.setDefine(GLYPH_SHADOWS_DEFINE, receive ? osg::StateAttribute::ON : osg::StateAttribute::OFF);
     if (!receive)
+    {
+        stateSet.removeUniform("osgGlyphs_shadowMap");
+        stateSet.removeUniform("osgGlyphs_shadowUnit");
         return;
+    }
     const int unit = static_cast<int>(shadowTextureUnit);
     stateSet.addUniform(new osg::Uniform("osgGlyphs_shadowMap", unit));
     stateSet.addUniform(new osg::Uniform("osgGlyphs_shadowUnit", unit));
