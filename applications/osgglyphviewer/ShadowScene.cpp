@@ -50,10 +50,11 @@ osg::ref_ptr<osgShadow::ShadowedScene> createShadowScene(const osg::BoundingBox&
     osg::ref_ptr<osgShadow::ShadowedScene> scene =
         new osgShadow::ShadowedScene(new osgShadow::ViewDependentShadowMap);
     scene->setName("--shadows");
-    // The ground plane receives through fixed-function texturing (ViewDependentShadowMap's own
-    // shaders index gl_TexCoord with a uniform, which GLSL 1.30+ compilers reject), the glyphs
-    // through their own shaders.
+    // The glyphs, and ordinary geometry through setSurfaceShading, receive through the glyphs'
+    // shadow look-up: ViewDependentShadowMap's own shaders index gl_TexCoord with a uniform, which
+    // GLSL 1.30+ compilers reject, and its fixed-function texturing paints shadows black.
     osgGlyphs::setGlyphShadows(*scene->getOrCreateStateSet(), true);
+    osgGlyphs::setSurfaceShading(*scene->getOrCreateStateSet());
     scene->addChild(createLight().get());
     if (dataBounds.valid())
         scene->addChild(createGroundPlane(dataBounds).get());

@@ -311,6 +311,71 @@ TEST_P(GlyphShadows, SphereGlyphDoesNotShadowItsOwnLitSide)
     EXPECT_LE(count(darkened), 10) << "the glyph shadows itself";
 }
 
+/** The mean and the largest distance from expected of the green channel over the mask. */
+std::pair<double, int> greenOver(const Frame& frame, const Mask& mask, int expected)
+{
+    double sum = 0.0;
+    int worst = 0, n = 0;
+    for (int y = 0; y < SIZE; ++y)
+        for (int x = 0; x < SIZE; ++x)
+            if (mask[y * SIZE + x])
+            {
+                const int green = frame.colorAt(x, y).g();
+                sum += green;
+                worst = std::max(worst, std::abs(green - expected));
+                ++n;
+            }
+    return {n ? sum / n : -1.0, worst};
+}
+
+TEST_P(GlyphShadows, SurfaceShadingLightsAPlaneAndKeepsTheAmbientInItsShadow)
+{
+    if (GetParam() == Technique::ShadowMap)
+        GTEST_SKIP() << "osgShadow::ShadowMap's own program shades ordinary geometry below it";
+    auto scene = [&]
+    {
+        return shadowed(GetParam(), {groundPlane(), shapeNode(new osg::Sphere(SPHERE_CENTRE, SPHERE_RADIUS),
+                                                              RED, CASTS | RECEIVES)});
+    };
+    const Frame fixedFunction = render(scene().get());
+    osg::ref_ptr<osg::Node> shadedScene = scene();
+    osgGlyphs::setSurfaceShading(*shadedScene->getOrCreateStateSet());
+    const Frame shaded = render(shadedScene.get());
+    saveFrame(shaded, name("surface_shading"));
+
+    const Mask expected = planeShadow(fixedFunction), actual = planeShadow(shaded);
+    ASSERT_GT(count(expected), 2000) << "the tessellated sphere casts no shadow to compare with";
+    EXPECT_GE(intersectionOverUnion(actual, expected), 0.98)
+        << count(actual) << " shadowed pixels, " << count(expected) << " expected";
+
+    // The plane's grey 0.8 under the glyph material's ambient 0.2, light 0's ambient 0.2 and
+    // diffuse 0.8 (no specular): 0.8 * 0.4 in the shadow, 0.8 * (0.4 + 0.8 N.L) in the light.
+    const int TOLERANCE = 3; // rounding to 8 bits, and the shadow map's filtered edge left out
+    const int inShadow = int(std::lround(255.0 * 0.8 * 0.4));
+    const int inLight = int(std::lround(255.0 * 0.8 * (0.4 + 0.8 * TO_LIGHT.z())));
+    Mask shadowInside(SIZE * SIZE), lit(SIZE * SIZE);
+    for (int y = 2; y < SIZE - 2; ++y)
+        for (int x = 2; x < SIZE - 2; ++x)
+        {
+            bool allShadow = true, allLit = true;
+            for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx)
+                {
+                    const int i = (y + dy) * SIZE + x + dx;
+                    allShadow = allShadow && actual[i];
+                    allLit = allLit && showsPlane(shaded, x + dx, y + dy) && !actual[i];
+                }
+            shadowInside[y * SIZE + x] = allShadow;
+            lit[y * SIZE + x] = allLit;
+        }
+    ASSERT_GT(count(shadowInside), 1000);
+    ASSERT_GT(count(lit), 10000);
+    const auto shadowGreen = greenOver(shaded, shadowInside, inShadow);
+    const auto litGreen = greenOver(shaded, lit, inLight);
+    EXPECT_LE(shadowGreen.second, TOLERANCE) << "mean " << shadowGreen.first << ", expected " << inShadow;
+    EXPECT_LE(litGreen.second, TOLERANCE) << "mean " << litGreen.first << ", expected " << inLight;
+}
+
 /** The same view through a projection that mixes eye-space axes, as light-space perspective
  * shadow maps (ViewDependentShadowMap's default) do: view * rotation^-1 and rotation *
  * projection. A sphere glyph covers the same pixels at the same depths. */

@@ -54,10 +54,16 @@ bool locate(const std::string& line, const std::vector<std::string>& files, std:
 
 GlyphProgram::GlyphProgram(const GlyphTechnique& technique,
                            const std::map<std::string, std::string>& generated, const ErrorFunction& onError)
+    : GlyphProgram(technique.getTechniqueName(), technique.getShaderFiles(), generated, onError)
+{
+}
+
+GlyphProgram::GlyphProgram(const std::string& name, const std::vector<GlyphShaderFile>& files,
+                           const std::map<std::string, std::string>& generated, const ErrorFunction& onError)
     : _generated(generated), _onError(onError)
 {
-    setName(std::string("osgGlyphs ") + technique.getTechniqueName());
-    for (const GlyphShaderFile& file : technique.getShaderFiles())
+    setName("osgGlyphs " + name);
+    for (const GlyphShaderFile& file : files)
     {
         const ExpandedShaderSource source = expandShaderSource(file.name, _generated);
         osg::ref_ptr<osg::Shader> shader = new osg::Shader(file.type, source.text);

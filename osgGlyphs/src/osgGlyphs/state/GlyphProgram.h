@@ -38,6 +38,9 @@ public:
     GlyphProgram() = default;
     GlyphProgram(const GlyphTechnique& technique, const std::map<std::string, std::string>& generated,
                  const ErrorFunction& onError);
+    /** A program of these shader files, named "osgGlyphs <name>". */
+    GlyphProgram(const std::string& name, const std::vector<GlyphShaderFile>& files,
+                 const std::map<std::string, std::string>& generated, const ErrorFunction& onError);
     GlyphProgram(const GlyphProgram& other, const osg::CopyOp& copyop = osg::CopyOp::SHALLOW_COPY);
     META_StateAttribute(osgGlyphs, GlyphProgram, PROGRAM);
 

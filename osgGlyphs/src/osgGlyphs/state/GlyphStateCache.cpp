@@ -1,5 +1,7 @@
 #include <osgGlyphs/GlyphStateCache>
 
+#include <osgGlyphs/GlyphCloud>
+
 #include "../culling/OcclusionContext.h"
 #include "GlyphDefines.h"
 #include "GlyphProgram.h"
@@ -85,6 +87,13 @@ void osgGlyphs::setGlyphShadows(osg::StateSet& stateSet, bool receive, unsigned 
     stateSet.addUniform(new osg::Uniform("osgGlyphs_shadowUnit", unit));
 }
 
+void osgGlyphs::setSurfaceShading(osg::StateSet& stateSet)
+{
+    stateSet.setAttributeAndModes(GlyphStateCache::instance()->getSurfaceProgram());
+    stateSet.setDefine(GLYPH_LIT_DEFINE);
+    stateSet.addUniform(new osg::Uniform("osgGlyphs_material", GlyphCloud::getDefaultMaterial()));
+}
+
 GlyphStateCache* GlyphStateCache::instance()
 {
     static osg::ref_ptr<GlyphStateCache> s_instance = new GlyphStateCache;
@@ -107,6 +116,21 @@ osg::Program* GlyphStateCache::getProgram(const GlyphTechnique& technique)
 {
     std::lock_guard<std::mutex> lock(_mutex);
     return getProgramLocked(technique);
+}
+
+osg::Program* GlyphStateCache::getSurfaceProgram()
+{
+    // Not a technique's name: those are single words.
+    const std::string NAME = "surface shading";
+    std::lock_guard<std::mutex> lock(_mutex);
+    osg::ref_ptr<osg::Program>& program = _programs[NAME];
+    if (!program)
+        program = new detail::GlyphProgram(NAME,
+                                           {{osg::Shader::VERTEX, "osgGlyphs/surface.vert"},
+                                            {osg::Shader::FRAGMENT, "osgGlyphs/surface.frag"}},
+                                           {{"osgGlyphs/defines.glsl", detail::generateDefinesGlsl()}},
+                                           [this](const std::string& error) { reportProgramError(error); });
+    return program.get();
 }
 
 osg::ref_ptr<osg::StateSet> GlyphStateCache::getStateSet(const GlyphTechnique& technique,
