@@ -25,13 +25,6 @@ bool checkNoColumnOptions(const osgGlyphsData::GlyphMappingOptions& mapping, con
     return option == nullptr;
 }
 
-osg::ref_ptr<ViewerScene> createFixedScene(osg::Node* content, const osgGlyphsData::ColorKey& key)
-{
-    osg::ref_ptr<osg::Node> node = content;
-    ViewerScene::FrameSource source = [node](std::size_t, std::string&) { return node; };
-    return new ViewerScene(source, 1, key);
-}
-
 osgGlyphsData::ColorKey makeScalarKey(const std::string& title,
                                       const osgGlyphsData::GlyphMappingOptions& mapping, float min, float max)
 {
@@ -44,6 +37,13 @@ osgGlyphsData::ColorKey makeScalarKey(const std::string& title,
     return key;
 }
 
+}
+
+osg::ref_ptr<ViewerScene> createFixedScene(osg::Node* content, const osgGlyphsData::ColorKey& key)
+{
+    osg::ref_ptr<osg::Node> node = content;
+    ViewerScene::FrameSource source = [node](std::size_t, std::string&) { return node; };
+    return new ViewerScene(source, 1, key);
 }
 
 osg::ref_ptr<ViewerScene> createDefaultScene(const ViewerOptions& options, std::string& error)

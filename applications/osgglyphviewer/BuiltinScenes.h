@@ -5,6 +5,9 @@
 
 #include "ViewerScene.h"
 
+/** A scene of one frame that shows content, with the colour key. */
+osg::ref_ptr<ViewerScene> createFixedScene(osg::Node* content, const osgGlyphsData::ColorKey& key);
+
 /** The built-in scene, shown without a file or --random: 2000 spheres (seeded) coloured by
  * height, cutting through a fixed-function box and sphere, seen from its own view. */
 osg::ref_ptr<ViewerScene> createDefaultScene(const ViewerOptions& options, std::string& error);

@@ -8,6 +8,7 @@
 #include <osgGlyphsHeadless/DepthImage>
 #include <osgGlyphsHeadless/OffscreenViewer>
 
+#include <osgDB/DatabasePager>
 #include <osgDB/WriteFile>
 
 #include <iostream>
@@ -20,6 +21,32 @@ namespace
 double millisecondsSince(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+/** The longest wait for paged tiles before a picture is written anyway. */
+const double PAGING_TIMEOUT_SECONDS = 120.0;
+
+/** Renders frames until osgDB's DatabasePager has nothing left to load or merge (a tile
+ * archive's tiles, any PagedLOD), so that the picture shows the finished view. Returns how many
+ * frames that took. */
+unsigned int settlePaging(osgViewer::Viewer& viewer)
+{
+    osgDB::DatabasePager* pager = viewer.getDatabasePager();
+    const auto start = std::chrono::steady_clock::now();
+    unsigned int frames = 0;
+    auto busy = [pager]
+    {
+        return pager->getRequestsInProgress() || pager->getFileRequestListSize() > 0 ||
+               pager->getDataToMergeListSize() > 0;
+    };
+    while (pager && busy() && millisecondsSince(start) < 1000.0 * PAGING_TIMEOUT_SECONDS)
+    {
+        if (pager->getDataToMergeListSize() == 0)
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        viewer.frame();
+        ++frames;
+    }
+    return frames;
 }
 
 /** Writes the outputs of the frame just rendered; depth comes from sceneCapture, which read it
@@ -121,6 +148,13 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
         const auto frameStart = std::chrono::steady_clock::now();
         viewer->frame();
         times.push_back(millisecondsSince(frameStart));
+        if (frame == 0)
+        {
+            const auto pagingStart = std::chrono::steady_clock::now();
+            if (const unsigned int pagingFrames = settlePaging(*viewer))
+                std::cout << PROGRAM << ": paged in tiles over " << pagingFrames << " more frames in "
+                          << millisecondsSince(pagingStart) << " ms" << std::endl;
+        }
         error = osgGlyphs::GlyphStateCache::instance()->getProgramError();
         if (!error.empty())
         {

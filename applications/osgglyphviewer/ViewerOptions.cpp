@@ -58,24 +58,8 @@ std::string collectParserErrors(osg::ArgumentParser& arguments)
 bool readMappingOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std::string& error)
 {
     osgGlyphsData::GlyphMappingOptions& mapping = options.mapping;
-    mapping.optionPrefix = "--";
-    for (const std::string& name : osgGlyphsData::getGlyphMappingOptionNames())
-    {
-        const std::string option = "--" + name;
-        std::string value, maximum;
-        bool found = false;
-        if (name == "unlit")
-            found = arguments.read(option);
-        else if (name == "range")
-        {
-            found = arguments.read(option, value, maximum);
-            value += "," + maximum;
-        }
-        else if (name != "color" && name != "lit")
-            found = arguments.read(option, value);
-        if (found && !osgGlyphsData::setGlyphMappingOption(mapping, name, value, error))
-            return false;
-    }
+    if (!osgGlyphsData::readGlyphMappingArguments(arguments, mapping, error))
+        return false;
     const osg::ref_ptr<osgGlyphs::GlyphTechnique> technique = osgGlyphs::createTechnique(mapping.technique);
     if (!technique->supportsShape(mapping.shape))
         std::cerr << PROGRAM << ": warning: the " << technique->getTechniqueName()
@@ -241,35 +225,7 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
                                                "(TPCG 2010): n glyphs in the unit cube, scalars in [0,1).");
     usage.addCommandLineOption("--seed <s>", "The seed of --random (default 1).");
 
-    usage.addCommandLineOption("--position <x,y,z>", "Position columns (default x,y,z, then xu,yu,zu, "
-                                                     "then xs,ys,zs scaled by the simulation box).");
-    usage.addCommandLineOption("--radius <r>", "One radius for every glyph (default: from the elements, else "
-                                               "0.4 (spheres) or 0.2 (vectors) times the median "
-                                               "nearest-neighbour distance). With --radius-by, a factor.");
-    usage.addCommandLineOption("--radius-by <column>", "Radius of each glyph from a column. Without it, a "
-                                                       "column named radius, or diameter (halved), gives "
-                                                       "the radii (LAMMPS granular dumps, most CSV files).");
-    usage.addCommandLineOption("--color-by <column|speed>",
-                               "Colour by a column through the colour map, or by speed, the length of "
-                               "the vectors (--vector). Default: element colours where the data has an "
-                               "element column, else its red,green,blue columns, else speed where it has "
-                               "vectors (a LAMMPS dump with vx,vy,vz), else a palette of LAMMPS types or "
-                               "species, else one colour.");
-    usage.addCommandLineOption("--colormap <name|file>",
-                               "Colour map: " + joinNames(osgGlyphs::ColorMap::getBuiltinNames()) +
-                                   " (default viridis), or a file of #rrggbb lines.");
-    usage.addCommandLineOption("--range <min> <max>", "Values mapped to the ends of the colour map "
-                                                      "(default: the data's range over every frame).");
-    usage.addCommandLineOption("--vector <vx,vy,vz>", "Vector columns for cones, arrows, cylinders and speed "
-                                                      "(default vx,vy,vz, then velo_*, velocity_*).");
-    usage.addCommandLineOption("--length-scale <s>", "Vector glyph length per unit of vector length "
-                                                     "(default: the mean vector is 4 radii long).");
-    usage.addCommandLineOption("--glyph <shape>", "sphere (default), cone, arrow or cylinder; all but "
-                                                  "sphere point along the vectors.");
-    usage.addCommandLineOption("--unlit", "Flat colours instead of lit glyphs (key l toggles).");
-    usage.addCommandLineOption("--technique <name>",
-                               "How glyphs are drawn: " + joinNames(osgGlyphs::getTechniqueNames()) +
-                                   " (default " + osgGlyphs::DEFAULT_GLYPH_TECHNIQUE + ").");
+    osgGlyphsData::describeGlyphMappingArguments(usage);
 
     usage.addCommandLineOption("--size <w> <h>", "Window or image size in pixels (default 800 600).");
     usage.addCommandLineOption("--camera <ex> <ey> <ez> <cx> <cy> <cz> <ux> <uy> <uz>",

@@ -4,6 +4,7 @@
 #include "ColorLegend.h"
 #include "DatasetLoading.h"
 #include "ShadowScene.h"
+#include "TileScene.h"
 #include "ViewerCamera.h"
 #include "ViewerText.h"
 
@@ -233,7 +234,9 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
         return nullptr;
     }
     osg::ref_ptr<ViewerScene> scene;
-    if (!options.file.empty())
+    if (!options.file.empty() && isTileArchive(options.file))
+        scene = createTileScene(options, error);
+    else if (!options.file.empty())
         scene = createDatasetScene(options, error);
     else if (options.randomCount > 0)
         scene = createRandomScene(options, error);

@@ -184,6 +184,11 @@ Frame Renderer::render(osg::Node* scene)
 {
     _viewer->setSceneData(scene);
     _viewer->frame();
+    return capture();
+}
+
+Frame Renderer::capture() const
+{
     Frame frame;
     frame.color = new osg::Image(*_viewer->getColorImage(), osg::CopyOp::DEEP_COPY_ALL);
     frame.depth = new osg::Image(*_viewer->getDepthImage(), osg::CopyOp::DEEP_COPY_ALL);

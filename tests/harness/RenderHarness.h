@@ -57,6 +57,8 @@ public:
     void setClearColor(const osg::Vec4& color);
 
     Frame render(osg::Node* scene);
+    /** The last frame rendered (after getViewer()->frame()). */
+    Frame capture() const;
     osgGlyphsHeadless::OffscreenViewer* getViewer() { return _viewer.get(); }
 
 private:

@@ -53,7 +53,7 @@ unsigned int GlyphCloud::countGlyphs(bool report) const
     {
         if (!array || array->getNumElements() == numPositions)
             return;
-        if (report)
+        if (report && numPositions > 0) // a cloud being filled, positions last
             OSG_WARN << "osgGlyphs::GlyphCloud \"" << getName() << "\": the " << what << " array has "
                      << array->getNumElements() << " values for " << numPositions
                      << " positions; only the first " << std::min<size_t>(count, array->getNumElements())
@@ -196,14 +196,14 @@ void GlyphCloud::updateRadiusScale()
 
 bool GlyphCloud::updateQuantisationRange()
 {
-    // The data's range, narrowed to the colour range where that is narrower: values beyond the
-    // colour range clamp to the same colour anyway, and the 16 bits span what is seen.
-    float lo = _dataMin, hi = _dataMax;
-    const float rangeLo = std::min(_rangeMin, _rangeMax), rangeHi = std::max(_rangeMin, _rangeMax);
-    if (std::isfinite(rangeLo) && std::isfinite(rangeHi) && std::max(lo, rangeLo) < std::min(hi, rangeHi))
+    // The colour range: values beyond it clamp to the same colours anyway, 16 bits over it are
+    // finer than any colour map, and clouds of one range (the tiles of a dataset) quantise
+    // alike. The data's range where the colour range is empty or not finite.
+    float lo = std::min(_rangeMin, _rangeMax), hi = std::max(_rangeMin, _rangeMax);
+    if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi))
     {
-        lo = std::max(lo, rangeLo);
-        hi = std::min(hi, rangeHi);
+        lo = _dataMin;
+        hi = _dataMax;
     }
     const bool changed = lo != _quantisedMin || hi != _quantisedMax;
     _quantisedMin = lo;

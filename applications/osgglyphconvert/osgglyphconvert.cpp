@@ -1,0 +1,260 @@
+// osgglyphconvert: point data into a paged level-of-detail hierarchy of glyph tiles, in one OSG
+// archive (.osga) whose master file is the root: `osgglyphviewer out.osga`, `osgviewer out.osga`.
+
+#include "ConvertProgress.h"
+
+#include <osgGlyphsData/GlyphMapping>
+#include <osgGlyphsData/PointReader>
+#include <osgGlyphsData/RandomCloud>
+#include <osgGlyphsTiles/TileBuilder>
+
+#include <osg/ArgumentParser>
+#include <osgDB/FileNameUtils>
+#include <osgDB/FileUtils>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace
+{
+
+const char* const PROGRAM = "osgglyphconvert";
+
+/** Glyphs of a --random dataset generated at a time. */
+const unsigned int RANDOM_BATCH = 1u << 20;
+
+struct ConvertOptions
+{
+    std::string input;
+    std::string output;
+    std::string format;
+    unsigned int frame = 0;
+    unsigned long long randomCount = 0;
+    unsigned int seed = 1;
+    osgGlyphsData::GlyphMappingOptions mapping;
+    osgGlyphsTiles::TileOptions tiles;
+};
+
+void describeOptions(osg::ApplicationUsage& usage)
+{
+    usage.setCommandLineUsage(std::string(PROGRAM) + " [options] <input> <output.osga>\n       " + PROGRAM +
+                              " --random <n> [--seed <s>] [options] <output.osga>");
+    usage.setDescription(std::string(PROGRAM) +
+                         " cuts point data into a paged level-of-detail hierarchy of glyph tiles, in one "
+                         "OSG archive that osgglyphviewer, osgviewer and osgDB::readNodeFile open.");
+    usage.addCommandLineOption(
+        "<input>", "A point file: " +
+                       []
+                       {
+                           std::string names;
+                           for (const std::string& name : osgGlyphsData::getSupportedPointFormats())
+                               names += (names.empty() ? "" : ", ") + name;
+                           return names;
+                       }() +
+                       " (by extension).");
+    usage.addCommandLineOption("--format <name>", "Read the input as this format whatever its extension.");
+    usage.addCommandLineOption("--frame <n>",
+                               "The frame of a multi-frame input, counted from 0 (default 0).");
+    usage.addCommandLineOption("--random <n>", "Instead of a file, n random glyphs in the unit cube with "
+                                               "scalars in [0,1) (as osgglyphviewer --random).");
+    usage.addCommandLineOption("--seed <s>", "The seed of --random (default 1).");
+    osgGlyphsData::describeGlyphMappingArguments(usage);
+    usage.addCommandLineOption("--tile-glyphs <n>", "The most glyphs in a leaf tile (default 32768).");
+    usage.addCommandLineOption("--tile-cells <n>", "Cells per axis of an inner tile's grid, one glyph "
+                                                   "per occupied cell: 2, 4, .., 256 (default 32).");
+    usage.addCommandLineOption("--pixels-per-cell <p>", "A tile gives way to its children when a cell of "
+                                                        "its grid would span p pixels (default 1.5).");
+    usage.addCommandLineOption("-h or --help", "Display this help.");
+}
+
+bool readOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::string& error)
+{
+    if (!osgGlyphsData::readGlyphMappingArguments(arguments, options.mapping, error))
+        return false;
+    arguments.read("--format", options.format);
+    int frame = 0;
+    if (arguments.read("--frame", frame) && frame < 0)
+    {
+        error = "--frame counts from 0";
+        return false;
+    }
+    options.frame = static_cast<unsigned int>(frame);
+    double count = 0.0;
+    if (arguments.read("--random", count) && !(count >= 1.0 && count <= 1e12))
+    {
+        error = "--random needs a number of glyphs from 1 to 1e12";
+        return false;
+    }
+    options.randomCount = static_cast<unsigned long long>(count);
+    arguments.read("--seed", options.seed);
+    int tileGlyphs = 0, tileCells = 0;
+    if (arguments.read("--tile-glyphs", tileGlyphs))
+    {
+        if (tileGlyphs < 1)
+        {
+            error = "--tile-glyphs needs a positive number";
+            return false;
+        }
+        options.tiles.maxGlyphsPerTile = static_cast<unsigned int>(tileGlyphs);
+    }
+    if (arguments.read("--tile-cells", tileCells))
+    {
+        if (tileCells < 2 || tileCells > 256 || (tileCells & (tileCells - 1)))
+        {
+            error = "--tile-cells needs a power of two from 2 to 256";
+            return false;
+        }
+        options.tiles.cellsPerAxis = static_cast<unsigned int>(tileCells);
+    }
+    if (arguments.read("--pixels-per-cell", options.tiles.pixelsPerCell) &&
+        !(options.tiles.pixelsPerCell > 0.0f))
+    {
+        error = "--pixels-per-cell needs a positive number";
+        return false;
+    }
+    for (int i = 1; i < arguments.argc(); ++i)
+        if (arguments.isOption(i))
+        {
+            error = std::string("unknown option ") + arguments[i] + " (see --help)";
+            return false;
+        }
+    const int files = arguments.argc() - 1;
+    const int expected = options.randomCount ? 1 : 2;
+    if (files != expected)
+    {
+        error = options.randomCount ? "--random needs one output file and no input (see --help)"
+                                    : "needs an input file and an output file (see --help)";
+        return false;
+    }
+    if (!options.randomCount)
+        options.input = arguments[1];
+    options.output = arguments[files];
+    if (osgDB::getLowerCaseFileExtension(options.output) != "osga")
+    {
+        error = options.output + ": the output is an OSG archive, named *.osga";
+        return false;
+    }
+    return true;
+}
+
+/** The tiles of a --random dataset, generated a batch at a time. */
+osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildRandom(const ConvertOptions& options,
+                                                      ConvertProgress& progress, std::string& error)
+{
+    osgGlyphsData::RandomCloudOptions random;
+    random.shape = options.mapping.shape;
+    random.lengthScale = options.mapping.lengthScale;
+    random.radius = options.mapping.radius > 0.0f
+                        ? options.mapping.radius
+                        : osgGlyphsData::getDefaultRandomRadius(static_cast<unsigned int>(
+                              std::min<unsigned long long>(options.randomCount, 0xffffffffu)));
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder;
+    progress.start("generating " + std::to_string(options.randomCount) + " random glyphs");
+    for (unsigned long long first = 0; first < options.randomCount; first += RANDOM_BATCH)
+    {
+        random.count = static_cast<unsigned int>(
+            std::min<unsigned long long>(RANDOM_BATCH, options.randomCount - first));
+        // One seed per batch: the first batch is osgglyphviewer's --random of the same seed.
+        random.seed = options.seed + static_cast<unsigned int>(first / RANDOM_BATCH) * 7919u;
+        osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(random);
+        osgGlyphsData::applyGlyphStyle(*cloud, options.mapping);
+        if (!builder)
+        {
+            builder = new osgGlyphsTiles::TileBuilder(*cloud, options.tiles);
+            builder->setColorTitle("random value");
+        }
+        if (!builder->addGlyphs(*cloud, error))
+            return nullptr;
+        progress.update(double(first + random.count) / options.randomCount);
+    }
+    return builder;
+}
+
+/** The tiles of one frame of a point file. */
+osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildFromFile(const ConvertOptions& options,
+                                                        ConvertProgress& progress, std::string& error)
+{
+    osgGlyphsData::PointReadOptions read;
+    read.format = options.format;
+    progress.start("reading " + options.input);
+    read.progress = [&progress](uint64_t done, uint64_t total)
+    { progress.update(total ? double(done) / total : 0.0); };
+    read.warning = [](const std::string& warning)
+    { std::cerr << PROGRAM << ": warning: " << warning << std::endl; };
+    osg::ref_ptr<osgGlyphsData::PointDataset> dataset =
+        osgGlyphsData::readPointFile(options.input, read, error);
+    if (!dataset)
+        return nullptr;
+    if (options.frame >= dataset->getNumFrames())
+    {
+        error = options.input + ": --frame " + std::to_string(options.frame) + ": the file has " +
+                std::to_string(dataset->getNumFrames()) + " frame(s) with points";
+        return nullptr;
+    }
+    osgGlyphsData::GlyphMapper mapper(options.mapping);
+    if (!mapper.prepare(*dataset, options.frame, error))
+        return nullptr;
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = mapper.createCloud(*dataset->getFrame(options.frame), error);
+    if (!cloud)
+        return nullptr;
+    std::cerr << PROGRAM << ": " << mapper.describe() << std::endl;
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder =
+        new osgGlyphsTiles::TileBuilder(*cloud, options.tiles);
+    builder->setColorTitle(mapper.getColorKey().title);
+    if (!builder->addGlyphs(*cloud, error))
+    {
+        error = options.input + ": " + error;
+        return nullptr;
+    }
+    return builder;
+}
+
+}
+
+int main(int argc, char** argv)
+{
+    osg::ArgumentParser arguments(&argc, argv);
+    osg::ApplicationUsage* usage = arguments.getApplicationUsage();
+    usage->setApplicationName(PROGRAM);
+    describeOptions(*usage);
+    if (arguments.read("-h") || arguments.read("--help"))
+    {
+        usage->write(std::cout, osg::ApplicationUsage::COMMAND_LINE_OPTION);
+        return 0;
+    }
+    ConvertOptions options;
+    std::string error;
+    if (!readOptions(arguments, options, error))
+    {
+        std::cerr << PROGRAM << ": " << error << std::endl;
+        return 2;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    ConvertProgress progress(PROGRAM);
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder =
+        options.randomCount ? buildRandom(options, progress, error) : buildFromFile(options, progress, error);
+    if (builder)
+    {
+        progress.start("writing " + options.output);
+        if (!builder->write(options.output, error, [&progress](double done) { progress.update(done); }))
+            builder = nullptr;
+    }
+    progress.finish();
+    if (!builder)
+    {
+        std::cerr << PROGRAM << ": " << error << std::endl;
+        return 1;
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::error_code sizeError;
+    const double bytes = static_cast<double>(std::filesystem::file_size(options.output, sizeError));
+    const double glyphs = static_cast<double>(builder->getNumGlyphs());
+    std::fprintf(stderr,
+                 "%s: wrote %s: %.0f glyphs, %.1f MB (%.1f bytes per glyph) in %.2f s (%.2f M glyphs/s)\n",
+                 PROGRAM, options.output.c_str(), glyphs, bytes / 1e6, glyphs > 0 ? bytes / glyphs : 0.0,
+                 seconds, seconds > 0 ? glyphs / seconds / 1e6 : 0.0);
+    return 0;
+}

@@ -1,0 +1,79 @@
+#include "TileScene.h"
+
+#include "BuiltinScenes.h"
+
+#include <osgGlyphsTiles/TileBuilder>
+
+#include <osg/NodeVisitor>
+#include <osgDB/FileNameUtils>
+#include <osgDB/FileUtils>
+#include <osgDB/ReadFile>
+
+namespace
+{
+
+/** The first glyph cloud in a graph (the root tile's). */
+class FirstCloud : public osg::NodeVisitor
+{
+public:
+    FirstCloud() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::Drawable& drawable) override
+    {
+        if (!_cloud)
+            _cloud = dynamic_cast<osgGlyphs::GlyphCloud*>(&drawable);
+    }
+    void apply(osg::Node& node) override
+    {
+        if (!_cloud)
+            traverse(node);
+    }
+    osgGlyphs::GlyphCloud* get() const { return _cloud; }
+
+private:
+    osgGlyphs::GlyphCloud* _cloud = nullptr;
+};
+
+}
+
+bool isTileArchive(const std::string& file)
+{
+    return osgDB::getLowerCaseFileExtension(file) == "osga";
+}
+
+osg::ref_ptr<ViewerScene> createTileScene(const ViewerOptions& options, std::string& error)
+{
+    if (options.frame > 0)
+    {
+        error = "--frame " + std::to_string(options.frame) + ": a tile archive holds one frame (0)";
+        return nullptr;
+    }
+    if (!osgDB::fileExists(options.file))
+    {
+        error = options.file + ": no such file";
+        return nullptr;
+    }
+    if (!osgGlyphsTiles::findTileSerializers(error))
+        return nullptr;
+    osg::ref_ptr<osg::Node> root = osgDB::readNodeFile(options.file);
+    if (!root)
+    {
+        error = options.file + ": not an OSG archive of glyph tiles (osgDB cannot read it)";
+        return nullptr;
+    }
+    FirstCloud first;
+    root->accept(first);
+    osgGlyphsData::ColorKey key;
+    if (const osgGlyphs::GlyphCloud* cloud = first.get())
+        if (cloud->getColorMode() == osgGlyphs::GlyphColorMode::Scalar)
+        {
+            key.kind = osgGlyphsData::ColorKey::Scalar;
+            root->getUserValue(osgGlyphsTiles::COLOR_TITLE_USER_VALUE, key.title);
+            key.colorMap = const_cast<osgGlyphs::ColorMap*>(cloud->getColorMap());
+            key.min = cloud->getScalarRangeMin();
+            key.max = cloud->getScalarRangeMax();
+        }
+    osg::ref_ptr<ViewerScene> scene = createFixedScene(root.get(), key);
+    scene->setDescription(options.file + ": glyph tiles paged in by size on screen" +
+                          (first.get() ? std::string() : " (no glyphs in the root tile)"));
+    return scene;
+}

@@ -1,0 +1,194 @@
+#include <osgGlyphsTiles/TileBuilder>
+
+#include "TileTree.h"
+
+#include <osg/Version>
+#include <osgDB/Archive>
+#include <osgDB/FileNameUtils>
+#include <osgDB/FileUtils>
+#include <osgDB/ObjectWrapper>
+#include <osgDB/Registry>
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <sstream>
+
+using namespace osgGlyphsTiles;
+using namespace osgGlyphsTiles::detail;
+using osgGlyphs::GlyphCloud;
+using osgGlyphs::GlyphColorMode;
+
+namespace
+{
+
+/** The master file of a tile archive: its root node. */
+const char* const ROOT_FILE = "root.osgb";
+
+const char* const GLYPH_CLOUD_WRAPPER = "osgGlyphs::GlyphCloud";
+
+bool isPowerOfTwo(unsigned int value)
+{
+    return value && !(value & (value - 1));
+}
+
+}
+
+const char* const osgGlyphsTiles::COLOR_TITLE_USER_VALUE = "osgGlyphs_colorTitle";
+
+bool osgGlyphsTiles::findTileSerializers(std::string& error)
+{
+    static std::mutex mutex;
+    std::lock_guard<std::mutex> lock(mutex);
+    osgDB::ObjectWrapperManager* wrappers = osgDB::Registry::instance()->getObjectWrapperManager();
+    if (wrappers->findWrapper(GLYPH_CLOUD_WRAPPER))
+        return true;
+    // The osgPlugins folder beside this library (installed), then the build tree's.
+    Dl_info library;
+    osgDB::FilePathList& paths = osgDB::Registry::instance()->getLibraryFilePathList();
+    if (dladdr(reinterpret_cast<void*>(&findTileSerializers), &library) && library.dli_fname)
+        paths.push_back(osgDB::getFilePath(osgDB::getRealPath(library.dli_fname)));
+    paths.push_back(OSGGLYPHS_BUILD_LIBRARY_DIR);
+    if (wrappers->findWrapper(GLYPH_CLOUD_WRAPPER))
+        return true;
+    error = "the osgGlyphs serializers (osgdb_serializers_osgglyphs) are not on OSG's plugin path: set "
+            "OSG_LIBRARY_PATH to the folder that holds osgPlugins-" +
+            std::string(osgGetVersion()) + "/osgdb_serializers_osgglyphs.so";
+    return false;
+}
+
+TileBuilder::TileBuilder(const GlyphCloud& style, const TileOptions& options)
+    : _style(new GlyphCloud(style, osg::CopyOp::SHALLOW_COPY)), _options(options), _glyphs(new TileGlyphs)
+{
+    _options.maxGlyphsPerTile = std::max(_options.maxGlyphsPerTile, 1u);
+    if (!isPowerOfTwo(_options.cellsPerAxis) || _options.cellsPerAxis < 2 || _options.cellsPerAxis > 256)
+        _options.cellsPerAxis = TileOptions().cellsPerAxis;
+    if (!(_options.pixelsPerCell > 0.0f))
+        _options.pixelsPerCell = TileOptions().pixelsPerCell;
+    _glyphs->origin = style.getOrigin();
+    // The style keeps the settings, not the glyphs (the positions first: an empty cloud is
+    // consistent whatever its other arrays).
+    _style->setPositions(new osg::Vec3Array);
+    _style->setRadii(nullptr);
+    if (_style->getColorMode() == GlyphColorMode::Scalar)
+        _style->setScalars(new osg::FloatArray);
+    else if (_style->getColorMode() == GlyphColorMode::RGBA)
+        _style->setColors(new osg::Vec4ubArray);
+    _style->setVectors(_style->getShape() == osgGlyphs::GlyphShape::Sphere ? nullptr : new osg::Vec3Array);
+    _style->setSelection({});
+}
+
+TileBuilder::~TileBuilder() = default;
+
+std::size_t TileBuilder::getNumGlyphs() const
+{
+    return _glyphs->positions.size();
+}
+
+bool TileBuilder::addGlyphs(const GlyphCloud& cloud, std::string& error)
+{
+    const osg::Vec3Array* positions = cloud.getPositions();
+    const std::size_t count = positions ? positions->size() : 0;
+    const GlyphColorMode mode = _style->getColorMode();
+    const bool vectors = _style->getShape() != osgGlyphs::GlyphShape::Sphere;
+    const osg::FloatArray* radii = cloud.getRadii();
+    const osg::FloatArray* scalars = cloud.getScalars();
+    const osg::Vec4ubArray* colors = cloud.getColors();
+    const osg::Vec3Array* vectorArray = cloud.getVectors();
+    if (cloud.getColorMode() != mode)
+    {
+        error = "the glyphs' colours are not of the kind of the tiles' style";
+        return false;
+    }
+    if ((radii && radii->size() < count) ||
+        (mode == GlyphColorMode::Scalar && (!scalars || scalars->size() < count)) ||
+        (mode == GlyphColorMode::RGBA && (!colors || colors->size() < count)) ||
+        (vectors && (!vectorArray || vectorArray->size() < count)))
+    {
+        error = "the glyphs' arrays are shorter than their positions";
+        return false;
+    }
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        const float radius = radii ? (*radii)[i] : cloud.getRadius();
+        if (!(*positions)[i].valid() || !std::isfinite(radius) || radius < 0.0f ||
+            (vectors && !(*vectorArray)[i].valid()))
+        {
+            std::ostringstream message;
+            message << "glyph " << getNumGlyphs() + i << " has a non-finite position, radius or vector";
+            error = message.str();
+            return false;
+        }
+    }
+    TileGlyphs& glyphs = *_glyphs;
+    const osg::Vec3d shift = cloud.getOrigin() - glyphs.origin;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        glyphs.positions.push_back(osg::Vec3f(osg::Vec3d((*positions)[i]) + shift));
+        glyphs.radii.push_back(radii ? (*radii)[i] : cloud.getRadius());
+    }
+    if (mode == GlyphColorMode::Scalar)
+        for (std::size_t i = 0; i < count; ++i)
+        {
+            const float value = (*scalars)[i];
+            if (std::isfinite(value))
+            {
+                const bool first = glyphs.scalarMin > glyphs.scalarMax;
+                glyphs.scalarMin = first ? value : std::min(glyphs.scalarMin, value);
+                glyphs.scalarMax = first ? value : std::max(glyphs.scalarMax, value);
+            }
+            glyphs.scalars.push_back(value);
+        }
+    if (mode == GlyphColorMode::RGBA)
+        glyphs.colors.insert(glyphs.colors.end(), colors->begin(), colors->begin() + count);
+    if (vectors)
+        glyphs.vectors.insert(glyphs.vectors.end(), vectorArray->begin(), vectorArray->begin() + count);
+    return true;
+}
+
+osg::ref_ptr<osg::Node> TileBuilder::createTree() const
+{
+    std::string error;
+    osg::ref_ptr<osg::Node> root = TileTree(*_glyphs, *_style, _options).build(nullptr, {}, error);
+    if (root && !_colorTitle.empty())
+        root->setUserValue(COLOR_TITLE_USER_VALUE, _colorTitle);
+    return root;
+}
+
+bool TileBuilder::write(const std::string& path, std::string& error, const ProgressFunction& progress) const
+{
+    if (!findTileSerializers(error))
+        return false;
+    if (osgDB::fileExists(path) && std::remove(path.c_str()) != 0)
+    {
+        error = path + ": cannot replace the file";
+        return false;
+    }
+    osg::ref_ptr<osgDB::Archive> archive = osgDB::openArchive(path, osgDB::ReaderWriter::CREATE);
+    if (!archive)
+    {
+        error = path + ": cannot create an OSG archive (osgDB's osga plugin)";
+        return false;
+    }
+    // The first file written is the archive's master file: a place holder until the root is
+    // made, after its descendants, and written again under the same name.
+    osg::ref_ptr<osg::Group> placeHolder = new osg::Group;
+    bool written = archive->writeNode(*placeHolder, ROOT_FILE).success();
+    std::string treeError;
+    osg::ref_ptr<osg::Node> root;
+    if (written)
+        root = TileTree(*_glyphs, *_style, _options).build(archive.get(), progress, treeError);
+    if (root && !_colorTitle.empty())
+        root->setUserValue(COLOR_TITLE_USER_VALUE, _colorTitle);
+    written = written && root.valid() && archive->writeNode(*root, ROOT_FILE).success();
+    archive->close();
+    if (!written)
+    {
+        error = path + ": " + (treeError.empty() ? "cannot write the tiles" : treeError);
+        return false;
+    }
+    return true;
+}

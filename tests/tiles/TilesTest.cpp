@@ -1,0 +1,248 @@
+// Paged glyph tiles (osgGlyphsTiles): a converted dataset paged in to its finest level renders
+// exactly as one flat GlyphCloud of the same glyphs; a coarse level, from the distance where it
+// is shown, keeps the coverage and the mean colour of the full render; paging never leaves holes.
+
+#include "RenderHarness.h"
+
+#include <osgGlyphsData/RandomCloud>
+#include <osgGlyphsTiles/TileBuilder>
+
+#include <osg/PagedLOD>
+#include <osgDB/DatabasePager>
+#include <osgDB/ReadFile>
+
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace osgGlyphsTest;
+using osgGlyphs::GlyphCloud;
+
+namespace
+{
+
+const int SIZE = 320;
+const osg::Vec3d CENTRE(0.5, 0.5, 0.5);
+
+osg::ref_ptr<GlyphCloud> randomCloud(unsigned int count, float radius, osgGlyphs::GlyphShape shape)
+{
+    osgGlyphsData::RandomCloudOptions options;
+    options.count = count;
+    options.radius = radius;
+    options.shape = shape;
+    return osgGlyphsData::createRandomCloud(options);
+}
+
+osgGlyphsTiles::TileOptions smallTiles()
+{
+    osgGlyphsTiles::TileOptions options;
+    options.maxGlyphsPerTile = 1500;
+    options.cellsPerAxis = 8;
+    return options;
+}
+
+/** Renders frames until the pager has nothing left to do; frames: how many it took. */
+Frame renderPaged(Renderer& renderer, osg::Node* scene, int& frames, std::vector<Frame>* during = nullptr)
+{
+    osgViewer::Viewer* viewer = renderer.getViewer();
+    viewer->setSceneData(scene);
+    osgDB::DatabasePager* pager = viewer->getDatabasePager();
+    frames = 0;
+    do
+    {
+        viewer->frame();
+        ++frames;
+        if (during)
+            during->push_back(renderer.capture());
+        if (pager->getDataToMergeListSize() == 0)
+            OpenThreads::Thread::microSleep(2000);
+    } while ((pager->getRequestsInProgress() || pager->getFileRequestListSize() > 0 ||
+              pager->getDataToMergeListSize() > 0) &&
+             frames < 2000);
+    viewer->frame(); // what the last merge brought in
+    return renderer.capture();
+}
+
+int countDifferences(const Frame& a, const Frame& b)
+{
+    int differing = 0;
+    for (int y = 0; y < SIZE; ++y)
+        for (int x = 0; x < SIZE; ++x)
+            differing += a.colorAt(x, y) != b.colorAt(x, y) || a.depthAt(x, y) != b.depthAt(x, y);
+    return differing;
+}
+
+int countCovered(const Frame& frame)
+{
+    int covered = 0;
+    for (int y = 0; y < SIZE; ++y)
+        for (int x = 0; x < SIZE; ++x)
+            covered += frame.isCovered(x, y);
+    return covered;
+}
+
+osg::Vec3d meanCoveredColor(const Frame& frame)
+{
+    osg::Vec3d sum;
+    int covered = 0;
+    for (int y = 0; y < SIZE; ++y)
+        for (int x = 0; x < SIZE; ++x)
+            if (frame.isCovered(x, y))
+            {
+                const osg::Vec4ub c = frame.colorAt(x, y);
+                sum += osg::Vec3d(c.r(), c.g(), c.b());
+                ++covered;
+            }
+    return covered ? sum / covered : sum;
+}
+
+std::string archivePath(const std::string& name)
+{
+    return outputPath(name + ".osga");
+}
+
+/** Writes the tiles of the cloud into an archive and reads its root back. */
+osg::ref_ptr<osg::Node> convert(const GlyphCloud& cloud, const std::string& name)
+{
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder = new osgGlyphsTiles::TileBuilder(cloud, smallTiles());
+    std::string error;
+    EXPECT_TRUE(builder->addGlyphs(cloud, error)) << error;
+    EXPECT_TRUE(builder->write(archivePath(name), error)) << error;
+    return osgDB::readNodeFile(archivePath(name));
+}
+
+class PagedTiles : public ::testing::TestWithParam<osgGlyphs::GlyphShape>
+{
+};
+
+TEST_P(PagedTiles, FinestLevelRendersExactlyAsTheFlatCloud)
+{
+    const std::string name = std::string("tiles_finest_") + osgGlyphs::getShapeName(GetParam());
+    osg::ref_ptr<GlyphCloud> cloud = randomCloud(20000, 0.008f, GetParam());
+    osg::ref_ptr<osg::Node> root = convert(*cloud, name);
+    ASSERT_TRUE(root.valid());
+    ASSERT_NE(dynamic_cast<osg::PagedLOD*>(root.get()), nullptr) << "20,000 glyphs make more than one tile";
+
+    Renderer flatRenderer(SIZE, SIZE), pagedRenderer(SIZE, SIZE);
+    for (Renderer* renderer : {&flatRenderer, &pagedRenderer})
+    {
+        renderer->setPerspective(30.0, 0.1, 10.0);
+        renderer->setLookAt(osg::Vec3d(1.9, -1.2, 1.4), CENTRE, osg::Vec3d(0.0, 0.0, 1.0));
+    }
+    const Frame flat = flatRenderer.render(cloud.get());
+    int frames = 0;
+    const Frame paged = renderPaged(pagedRenderer, root.get(), frames);
+    saveFrame(flat, name + "_flat");
+    saveFrame(paged, name + "_paged");
+    EXPECT_GT(frames, 2) << "the tiles were not paged in";
+    ASSERT_GT(countCovered(flat), SIZE * SIZE / 4);
+    EXPECT_EQ(countDifferences(paged, flat), 0) << "pixels that differ in colour or depth";
+}
+
+TEST_P(PagedTiles, PagingNeverLeavesHoles)
+{
+    const std::string name = std::string("tiles_paging_") + osgGlyphs::getShapeName(GetParam());
+    // Dense: spheres of 0.4 times the mean spacing, which cover the view.
+    osg::ref_ptr<GlyphCloud> cloud = randomCloud(20000, 0.4f * std::cbrt(1.0f / 20000.0f), GetParam());
+    osg::ref_ptr<osg::Node> root = convert(*cloud, name);
+    ASSERT_TRUE(root.valid());
+    Renderer renderer(SIZE, SIZE);
+    renderer.setPerspective(30.0, 0.1, 10.0);
+    renderer.setLookAt(osg::Vec3d(1.9, -1.2, 1.4), CENTRE, osg::Vec3d(0.0, 0.0, 1.0));
+    std::vector<Frame> during;
+    int frames = 0;
+    const Frame settled = renderPaged(renderer, root.get(), frames, &during);
+    ASSERT_GE(during.size(), 3u) << "nothing was paged in";
+    saveFrame(during.front(), name + "_first");
+    saveFrame(settled, name + "_settled");
+    // A hole: a block of 16x16 pixels (smaller than any tile here) that the settled frame
+    // covers (almost) wholly, and that a frame during paging leaves wholly uncovered.
+    const int BLOCK = 16;
+    int holes = 0, blocks = 0;
+    for (int by = 0; by + BLOCK <= SIZE; by += BLOCK)
+        for (int bx = 0; bx + BLOCK <= SIZE; bx += BLOCK)
+        {
+            int settledCovered = 0;
+            for (int y = by; y < by + BLOCK; ++y)
+                for (int x = bx; x < bx + BLOCK; ++x)
+                    settledCovered += settled.isCovered(x, y);
+            if (settledCovered < BLOCK * BLOCK * 9 / 10)
+                continue;
+            ++blocks;
+            for (const Frame& frame : during)
+            {
+                int covered = 0;
+                for (int y = by; y < by + BLOCK; ++y)
+                    for (int x = bx; x < bx + BLOCK; ++x)
+                        covered += frame.isCovered(x, y);
+                holes += covered == 0;
+            }
+        }
+    ASSERT_GT(blocks, 60);
+    EXPECT_EQ(holes, 0) << "of " << blocks << " covered blocks, over " << during.size() << " frames";
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, PagedTiles,
+                         ::testing::Values(osgGlyphs::GlyphShape::Sphere, osgGlyphs::GlyphShape::Cone),
+                         [](const ::testing::TestParamInfo<osgGlyphs::GlyphShape>& shape)
+                         { return std::string(osgGlyphs::getShapeName(shape.param)); });
+
+const unsigned int COARSE_TEST_GLYPHS = 100000;
+
+/** The root tile's representatives against every glyph, seen from where the root gives way to
+ * its children (its bounding sphere spans refineAt pixels): coverage and mean colour agree. */
+void expectCoarseLevelLooksLikeTheFineOne(float radius, const std::string& name, double coverageTolerance,
+                                          double colorTolerance)
+{
+    osg::ref_ptr<GlyphCloud> cloud = randomCloud(COARSE_TEST_GLYPHS, radius, osgGlyphs::GlyphShape::Sphere);
+    osgGlyphsTiles::TileOptions options;
+    options.maxGlyphsPerTile = 4096;
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder = new osgGlyphsTiles::TileBuilder(*cloud, options);
+    std::string error;
+    ASSERT_TRUE(builder->addGlyphs(*cloud, error)) << error;
+    osg::ref_ptr<osg::PagedLOD> root = dynamic_cast<osg::PagedLOD*>(builder->createTree().get());
+    ASSERT_TRUE(root.valid());
+    osg::ref_ptr<GlyphCloud> coarse = dynamic_cast<GlyphCloud*>(root->getChild(0));
+    ASSERT_TRUE(coarse.valid());
+    ASSERT_LT(coarse->getNumGlyphs(), cloud->getNumGlyphs() / 2);
+
+    // The distance at which the bounding sphere spans refineAt pixels across SIZE pixels at 30 degrees.
+    const double refineAt = root->getRangeList()[0].second;
+    const double focal = 0.5 * SIZE / std::tan(osg::DegreesToRadians(15.0));
+    const double distance = 2.0 * root->getRadius() * focal / refineAt;
+    Renderer renderer(SIZE, SIZE);
+    renderer.setPerspective(30.0, 0.01, 100.0);
+    renderer.setLookAt(CENTRE + osg::Vec3d(0.8, -0.5, 0.4) * (distance / 1.0247), CENTRE,
+                       osg::Vec3d(0, 0, 1));
+    const Frame fine = renderer.render(cloud.get());
+    const Frame coarseFrame = renderer.render(coarse.get());
+    saveFrame(fine, name + "_fine");
+    saveFrame(coarseFrame, name + "_coarse");
+    const int fineCovered = countCovered(fine), coarseCovered = countCovered(coarseFrame);
+    ASSERT_GT(fineCovered, 400);
+    const double coverage = double(coarseCovered) / fineCovered - 1.0;
+    const osg::Vec3d colorDifference = meanCoveredColor(coarseFrame) - meanCoveredColor(fine);
+    ::testing::Test::RecordProperty("coverage_change", std::to_string(coverage));
+    std::cerr << name << ": " << coarse->getNumGlyphs() << " of " << cloud->getNumGlyphs()
+              << " glyphs, coverage " << coarseCovered << " vs " << fineCovered << " (" << coverage * 100
+              << "%), mean colour difference " << colorDifference.x() << " " << colorDifference.y() << " "
+              << colorDifference.z() << std::endl;
+    EXPECT_LE(std::abs(coverage), coverageTolerance);
+    for (int channel = 0; channel < 3; ++channel)
+        EXPECT_LE(std::abs(colorDifference[channel]), colorTolerance) << "channel " << channel;
+}
+
+TEST(CoarseTiles, DenseDataKeepsCoverageAndMeanColour)
+{
+    expectCoarseLevelLooksLikeTheFineOne(0.4f * std::cbrt(1.0f / COARSE_TEST_GLYPHS), "tiles_coarse_dense",
+                                         0.05, 6.0);
+}
+
+TEST(CoarseTiles, SparseDataKeepsCoverageAndMeanColour)
+{
+    expectCoarseLevelLooksLikeTheFineOne(osgGlyphsData::getDefaultRandomRadius(COARSE_TEST_GLYPHS),
+                                         "tiles_coarse_sparse", 0.05, 6.0);
+}
+
+} // namespace
