@@ -2,6 +2,7 @@
 
 #include "BuiltinScenes.h"
 
+#include <osgGlyphsTiles/TileBudget>
 #include <osgGlyphsTiles/TileBuilder>
 
 #include <osg/NodeVisitor>
@@ -60,6 +61,7 @@ osg::ref_ptr<ViewerScene> createTileScene(const ViewerOptions& options, std::str
         error = options.file + ": not an OSG archive of glyph tiles (osgDB cannot read it)";
         return nullptr;
     }
+    root->addCullCallback(new osgGlyphsTiles::TileBudget(options.glyphBudget));
     FirstCloud first;
     root->accept(first);
     osgGlyphsData::ColorKey key;
@@ -73,7 +75,8 @@ osg::ref_ptr<ViewerScene> createTileScene(const ViewerOptions& options, std::str
             key.max = cloud->getScalarRangeMax();
         }
     osg::ref_ptr<ViewerScene> scene = createFixedScene(root.get(), key);
-    scene->setDescription(options.file + ": glyph tiles paged in by size on screen" +
+    scene->setDescription(options.file + ": glyph tiles paged in by size on screen, at most " +
+                          std::to_string(options.glyphBudget) + " glyphs a frame" +
                           (first.get() ? std::string() : " (no glyphs in the root tile)"));
     return scene;
 }

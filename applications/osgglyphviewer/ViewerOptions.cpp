@@ -99,6 +99,16 @@ bool readInputOptions(osg::ArgumentParser& arguments, ViewerOptions& options, st
         error = "--follow-timeout needs a positive number of seconds";
         return false;
     }
+    double budget = 0.0;
+    if (arguments.read("--glyph-budget", budget))
+    {
+        if (!(budget >= 1.0 && budget <= 1e12))
+        {
+            error = "--glyph-budget needs a number of glyphs from 1 to 1e12";
+            return false;
+        }
+        options.glyphBudget = static_cast<std::size_t>(budget);
+    }
     return true;
 }
 
@@ -224,6 +234,9 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--random <n>", "Instead of a file, the random dataset of Aguirre et al. "
                                                "(TPCG 2010): n glyphs in the unit cube, scalars in [0,1).");
     usage.addCommandLineOption("--seed <s>", "The seed of --random (default 1).");
+    usage.addCommandLineOption("--glyph-budget <n>",
+                               "A tile archive of osgglyphconvert (.osga): the most glyphs a frame draws; "
+                               "tiles refine, largest on screen first, within it (default 2000000).");
 
     osgGlyphsData::describeGlyphMappingArguments(usage);
 

@@ -5,6 +5,7 @@
 
 #include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsHeadless/HeadlessContext>
+#include <osgGlyphsTiles/TileBudget>
 
 #include <osg/ApplicationUsage>
 #include <osg/ArgumentParser>
@@ -40,6 +41,7 @@ struct ViewerOptions
     unsigned int seed = 1;
     bool follow = false;         // --follow: re-read the growing file, show frames as they complete
     double followTimeout = 60.0; // --follow-timeout S: offscreen, the longest wait for a frame
+    std::size_t glyphBudget = osgGlyphsTiles::TileBudget::DEFAULT_MAX_GLYPHS; // tile archives
 
     osgGlyphsData::GlyphMappingOptions mapping;
 

@@ -5,6 +5,7 @@
 #include "RenderHarness.h"
 
 #include <osgGlyphsData/RandomCloud>
+#include <osgGlyphsTiles/TileBudget>
 #include <osgGlyphsTiles/TileBuilder>
 
 #include <osg/PagedLOD>
@@ -181,6 +182,49 @@ TEST_P(PagedTiles, PagingNeverLeavesHoles)
         }
     ASSERT_GT(blocks, 60);
     EXPECT_EQ(holes, 0) << "of " << blocks << " covered blocks, over " << during.size() << " frames";
+}
+
+/** The glyphs of every tile loaded under node. */
+class LoadedGlyphs : public osg::NodeVisitor
+{
+public:
+    LoadedGlyphs() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::Drawable& drawable) override
+    {
+        if (const GlyphCloud* cloud = dynamic_cast<const GlyphCloud*>(&drawable))
+            glyphs += cloud->getNumGlyphs();
+    }
+    std::size_t glyphs = 0;
+};
+
+TEST(TileBudget, KeepsTheGlyphsDrawnWithinItAndPagesLess)
+{
+    osg::ref_ptr<GlyphCloud> cloud = randomCloud(20000, 0.008f, osgGlyphs::GlyphShape::Sphere);
+    auto render = [&](std::size_t budget, osgGlyphsTiles::TileBudget* callback)
+    {
+        osg::ref_ptr<osg::Node> root = convert(*cloud, "tiles_budget_" + std::to_string(budget));
+        if (callback)
+            root->addCullCallback(callback);
+        Renderer renderer(SIZE, SIZE);
+        renderer.setPerspective(30.0, 0.1, 10.0);
+        renderer.setLookAt(osg::Vec3d(1.9, -1.2, 1.4), CENTRE, osg::Vec3d(0.0, 0.0, 1.0));
+        int frames = 0;
+        const Frame frame = renderPaged(renderer, root.get(), frames);
+        saveFrame(frame, "tiles_budget_" + std::to_string(budget));
+        LoadedGlyphs loaded;
+        root->accept(loaded);
+        return std::make_pair(frame, loaded.glyphs);
+    };
+    const auto unlimited = render(0, nullptr);
+    osg::ref_ptr<osgGlyphsTiles::TileBudget> budget = new osgGlyphsTiles::TileBudget(6000);
+    const auto limited = render(6000, budget.get());
+    EXPECT_LE(budget->getLastGlyphs(), 6000u);
+    EXPECT_GT(budget->getLastGlyphs(), 2000u) << "the budget refines what it can";
+    EXPECT_GT(budget->getLastScale(), 1.0);
+    EXPECT_LT(limited.second, unlimited.second / 2) << "glyphs loaded";
+    // Fewer, larger glyphs cover about as much.
+    const double coverage = double(countCovered(limited.first)) / countCovered(unlimited.first);
+    EXPECT_NEAR(coverage, 1.0, 0.15);
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, PagedTiles,

@@ -1,6 +1,9 @@
 #include "TileTree.h"
 
+#include <osgGlyphsTiles/TileBudget>
+
 #include <osg/PagedLOD>
+#include <osg/ValueObject>
 
 #include <algorithm>
 #include <cfloat>
@@ -20,6 +23,16 @@ std::string childrenFileName(unsigned int level, uint64_t prefix)
     char name[64];
     std::snprintf(name, sizeof(name), "n%u-%llx.osgb", level, static_cast<unsigned long long>(prefix));
     return name;
+}
+
+/** The glyphs a built node draws at its own level of detail. */
+double glyphsDrawnBy(osg::Node& node)
+{
+    osg::Node* shown = &node;
+    if (osg::PagedLOD* lod = dynamic_cast<osg::PagedLOD*>(&node))
+        shown = lod->getChild(0);
+    const GlyphCloud* cloud = dynamic_cast<const GlyphCloud*>(shown);
+    return cloud ? cloud->getNumGlyphs() : 0.0;
 }
 
 unsigned int log2Of(unsigned int powerOfTwo)
@@ -90,6 +103,7 @@ osg::ref_ptr<osg::Node> TileTree::buildNode(unsigned int level, uint64_t prefix,
         return cloud;
     }
     osg::ref_ptr<osg::Group> children = new osg::Group;
+    double childGlyphs = 0.0;
     std::size_t first = begin;
     for (uint64_t octant = 0; octant < 8 && _error.empty(); ++octant)
     {
@@ -98,7 +112,13 @@ osg::ref_ptr<osg::Node> TileTree::buildNode(unsigned int level, uint64_t prefix,
             std::lower_bound(_codes.begin() + first, _codes.begin() + end, endCode(level + 1, childPrefix)) -
             _codes.begin());
         if (last > first)
-            children->addChild(buildNode(level + 1, childPrefix, first, last).get());
+        {
+            osg::ref_ptr<osg::Node> child = buildNode(level + 1, childPrefix, first, last);
+            if (!child)
+                break;
+            childGlyphs += glyphsDrawnBy(*child);
+            children->addChild(child.get());
+        }
         first = last;
     }
     if (!_error.empty())
@@ -116,6 +136,7 @@ osg::ref_ptr<osg::Node> TileTree::buildNode(unsigned int level, uint64_t prefix,
     lod->setCenterMode(osg::LOD::USER_DEFINED_CENTER);
     lod->setCenter(bound.center());
     lod->setRadius(bound.radius());
+    lod->setUserValue(CHILD_GLYPHS_USER_VALUE, childGlyphs);
     lod->addChild(createRepresentatives(level, begin, end).get(), 0.0f, refineAt);
     if (!_archive)
     {
