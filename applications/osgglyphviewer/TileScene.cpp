@@ -4,11 +4,13 @@
 
 #include <osgGlyphsTiles/TileBudget>
 #include <osgGlyphsTiles/TileBuilder>
+#include <osgGlyphsTiles/TileChecksum>
 
 #include <osg/NodeVisitor>
 #include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
+#include <osgDB/Registry>
 
 namespace
 {
@@ -61,6 +63,16 @@ osg::ref_ptr<ViewerScene> createTileScene(const ViewerOptions& options, std::str
         error = options.file + ": not an OSG archive of glyph tiles (osgDB cannot read it)";
         return nullptr;
     }
+    std::string checksumError;
+    if (!osgGlyphsTiles::checkTileChecksum(*root, checksumError))
+    {
+        error = options.file + ": root tile: " + checksumError;
+        return nullptr;
+    }
+    // Tiles paged in later are checked as they are read; a corrupt one is left out.
+    osgDB::Registry* registry = osgDB::Registry::instance();
+    registry->setReadFileCallback(
+        new osgGlyphsTiles::TileCheckingReadCallback(registry->getReadFileCallback()));
     root->addCullCallback(new osgGlyphsTiles::TileBudget(options.glyphBudget));
     FirstCloud first;
     root->accept(first);

@@ -7,13 +7,19 @@
 #include <osgGlyphsData/RandomCloud>
 #include <osgGlyphsTiles/TileBudget>
 #include <osgGlyphsTiles/TileBuilder>
+#include <osgGlyphsTiles/TileChecksum>
 
 #include <osg/PagedLOD>
 #include <osgDB/DatabasePager>
 #include <osgDB/ReadFile>
+#include <osgDB/Registry>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iostream>
+#include <iterator>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -225,6 +231,52 @@ TEST(TileBudget, KeepsTheGlyphsDrawnWithinItAndPagesLess)
     // Fewer, larger glyphs cover about as much.
     const double coverage = double(countCovered(limited.first)) / countCovered(unlimited.first);
     EXPECT_NEAR(coverage, 1.0, 0.15);
+}
+
+TEST(CorruptTiles, AreRefusedWithOneErrorAndTheRestDraws)
+{
+    osg::ref_ptr<GlyphCloud> cloud =
+        randomCloud(20000, 0.4f * std::cbrt(1.0f / 20000.0f), osgGlyphs::GlyphShape::Sphere);
+    osg::ref_ptr<osg::Node> intact = convert(*cloud, "tiles_intact");
+    ASSERT_TRUE(intact.valid());
+    // The same archive with bytes in its middle overwritten: inside a tile's glyphs.
+    const std::string corruptPath = archivePath("tiles_corrupt");
+    {
+        std::ifstream in(archivePath("tiles_intact"), std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        ASSERT_GT(bytes.size(), 100000u);
+        std::fill(bytes.begin() + bytes.size() / 2, bytes.begin() + bytes.size() / 2 + 256, '\xab');
+        std::ofstream(corruptPath, std::ios::binary) << bytes;
+    }
+    osg::ref_ptr<osg::Node> corrupt = osgDB::readNodeFile(corruptPath);
+    ASSERT_TRUE(corrupt.valid()) << "the root is intact";
+    std::string error;
+    EXPECT_TRUE(osgGlyphsTiles::checkTileChecksum(*corrupt, error)) << error;
+
+    osgDB::Registry* registry = osgDB::Registry::instance();
+    osg::ref_ptr<osgDB::ReadFileCallback> previous = registry->getReadFileCallback();
+    osg::ref_ptr<osgGlyphsTiles::TileCheckingReadCallback> checking =
+        new osgGlyphsTiles::TileCheckingReadCallback(previous.get());
+    registry->setReadFileCallback(checking.get());
+    auto render = [](osg::Node* root)
+    {
+        Renderer renderer(SIZE, SIZE);
+        renderer.setPerspective(30.0, 0.1, 10.0);
+        renderer.setLookAt(osg::Vec3d(1.9, -1.2, 1.4), CENTRE, osg::Vec3d(0.0, 0.0, 1.0));
+        int frames = 0;
+        return renderPaged(renderer, root, frames);
+    };
+    const Frame intactFrame = render(intact.get());
+    EXPECT_TRUE(checking->getRefusedTiles().empty()) << "an intact archive is refused";
+    const Frame corruptFrame = render(corrupt.get());
+    registry->setReadFileCallback(previous.get());
+    saveFrame(corruptFrame, "tiles_corrupt");
+    const std::set<std::string> refused = checking->getRefusedTiles();
+    ASSERT_EQ(refused.size(), 1u) << "tiles refused";
+    EXPECT_NE(refused.begin()->find("tiles_corrupt.osga/"), std::string::npos) << *refused.begin();
+    // The refused tile's parent stands in for it: the picture covers what the intact one does.
+    const double coverage = double(countCovered(corruptFrame)) / countCovered(intactFrame);
+    EXPECT_NEAR(coverage, 1.0, 0.05);
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, PagedTiles,

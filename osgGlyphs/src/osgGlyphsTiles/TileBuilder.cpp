@@ -1,4 +1,5 @@
 #include <osgGlyphsTiles/TileBuilder>
+#include <osgGlyphsTiles/TileChecksum>
 
 #include "TileTree.h"
 
@@ -183,6 +184,8 @@ bool TileBuilder::write(const std::string& path, std::string& error, const Progr
         root = TileTree(*_glyphs, *_style, _options).build(archive.get(), progress, treeError);
     if (root && !_colorTitle.empty())
         root->setUserValue(COLOR_TITLE_USER_VALUE, _colorTitle);
+    if (root)
+        setTileChecksum(*root);
     written = written && root.valid() && archive->writeNode(*root, ROOT_FILE).success();
     archive->close();
     if (!written)

@@ -1,6 +1,7 @@
 #include "TileTree.h"
 
 #include <osgGlyphsTiles/TileBudget>
+#include <osgGlyphsTiles/TileChecksum>
 
 #include <osg/PagedLOD>
 #include <osg/ValueObject>
@@ -144,6 +145,7 @@ osg::ref_ptr<osg::Node> TileTree::buildNode(unsigned int level, uint64_t prefix,
         return lod;
     }
     const std::string file = childrenFileName(level, prefix);
+    setTileChecksum(*children);
     const osgDB::ReaderWriter::WriteResult written = _archive->writeNode(*children, file);
     if (!written.success())
     {
