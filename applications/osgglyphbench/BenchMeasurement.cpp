@@ -9,6 +9,7 @@
 
 #include <osg/GLExtensions>
 #include <osg/Geode>
+#include <osg/Timer>
 
 #include <algorithm>
 #include <chrono>
@@ -21,7 +22,8 @@ namespace
 
 /** The glyphs of a case and their GPU bytes per glyph. */
 osg::ref_ptr<osgGlyphs::GlyphCloud> createCloud(const BenchCase& c, float radius,
-                                                const BenchSettings& settings, double& bytesPerGlyph)
+                                                const BenchSettings& settings, double& bytesPerGlyph,
+                                                double& occlusionSeconds)
 {
     osgGlyphsData::RandomCloudOptions options;
     options.count = c.n;
@@ -34,6 +36,12 @@ osg::ref_ptr<osgGlyphs::GlyphCloud> createCloud(const BenchCase& c, float radius
     cloud->setUseVertexBufferObjects(settings.dataPath == DataPath::VBO);
     cloud->setUseDisplayList(settings.dataPath == DataPath::DisplayList);
     cloud->setCulling(c.culling);
+    if (c.ambientOcclusion)
+    {
+        const osg::Timer_t start = osg::Timer::instance()->tick();
+        cloud->setOcclusion(cloud->computeOcclusion().get());
+        occlusionSeconds = osg::Timer::instance()->delta_s(start, osg::Timer::instance()->tick());
+    }
     bytesPerGlyph = cloud->getGPUBytesPerGlyph();
     return cloud;
 }
@@ -181,8 +189,10 @@ bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings
                  std::string& renderer, std::string& error)
 {
     result = BenchResult{c.technique, c.shape, c.n, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, radius, c.culling};
+    result.ambientOcclusion = c.ambientOcclusion;
     osg::ref_ptr<osg::Geode> scene = new osg::Geode;
-    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = createCloud(c, radius, settings, result.bytesPerGlyph);
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud =
+        createCloud(c, radius, settings, result.bytesPerGlyph, result.occlusionSeconds);
     scene->addDrawable(cloud.get());
     std::vector<double> frameMs;
     osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer;

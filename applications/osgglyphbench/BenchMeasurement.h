@@ -16,6 +16,7 @@ struct BenchCase
     osgGlyphs::GlyphShape shape;
     unsigned int n;
     osgGlyphs::GlyphCulling culling = osgGlyphs::GlyphCulling::Off;
+    bool ambientOcclusion = false;
 };
 
 /** One measured case: a row of the CSV. */
@@ -37,6 +38,9 @@ struct BenchResult
     double overdraw = -1.0;
     /** The fraction of the glyphs that culling sent to the GPU in the last frame. */
     double submitted = 1.0;
+    bool ambientOcclusion = false;
+    /** Seconds GlyphCloud::computeOcclusion() took, with ambient occlusion. */
+    double occlusionSeconds = 0.0;
 };
 
 /** Measures one case, a random cloud of glyphs of this radius, in a fresh headless viewer: one

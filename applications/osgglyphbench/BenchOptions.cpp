@@ -99,6 +99,12 @@ void applyQuick(BenchSettings& settings)
     settings.height = 240;
 }
 
+bool parseOnOff(const std::string& text, bool& on)
+{
+    on = text == "on";
+    return on || text == "off";
+}
+
 bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
 {
     std::string text;
@@ -116,6 +122,9 @@ bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
     if (arguments.read("--culling", text) &&
         !parseList(arguments, "--culling", text, "off, frustum, occlusion", osgGlyphs::parseCulling,
                    settings.cullings))
+        return false;
+    if (arguments.read("--ao", text) &&
+        !parseList(arguments, "--ao", text, "off, on", parseOnOff, settings.ambientOcclusion))
         return false;
     if (arguments.read("--data-path", text) && !parseDataPath(text, settings.dataPath))
     {
@@ -198,6 +207,10 @@ void describeBenchOptions(osg::ApplicationUsage& usage)
         "How clouds skip hidden glyphs, each measured in turn: off, frustum, occlusion "
         "(default occlusion; GlyphCloud::setCulling). Techniques that cannot cull are "
         "measured once, with culling off.");
+    usage.addCommandLineOption(
+        "--ao <off,on>", "Per-glyph ambient occlusion (GlyphCloud::computeOcclusion, setOcclusion): off "
+                         "(default), on, or both, each case measured with each; its computation time is "
+                         "printed and written to the CSV.");
     usage.addCommandLineOption("--equal-coverage",
                                "Give cones, arrows and cylinders the radius at which they cover as much of "
                                "the view as spheres of the radius above, at the same n (from one untimed "

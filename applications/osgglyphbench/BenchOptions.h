@@ -39,6 +39,8 @@ struct BenchSettings
     float radius = 0.0f;        // <= 0: getDefaultRandomRadius(n)
     float radiusSpacing = 0.0f; // > 0: the radius is this multiple of the mean spacing n^(-1/3)
     std::vector<osgGlyphs::GlyphCulling> cullings = {osgGlyphs::GlyphCulling::Occlusion};
+    /** Per-glyph ambient occlusion off, on, or both (--ao). */
+    std::vector<bool> ambientOcclusion = {false};
     bool equalCoverage = false;
     unsigned int seed = 1;
     double maxMs = 0.0; // 0: no limit

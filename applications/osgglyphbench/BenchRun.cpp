@@ -52,7 +52,8 @@ std::vector<BenchCase> listCases(const BenchSettings& settings)
         for (unsigned int n : settings.counts)
             for (const std::string& technique : measured)
                 for (osgGlyphs::GlyphCulling culling : getCullings(technique, settings))
-                    cases.push_back(BenchCase{technique, shape, n, culling});
+                    for (bool ambientOcclusion : settings.ambientOcclusion)
+                        cases.push_back(BenchCase{technique, shape, n, culling, ambientOcclusion});
     }
     return cases;
 }
@@ -65,7 +66,7 @@ bool isOverBudget(const std::vector<BenchResult>& results, const BenchCase& c, c
     for (const BenchResult& result : results)
     {
         if (result.technique == c.technique && result.shape == c.shape && result.culling == c.culling &&
-            result.msMedian > settings.maxMs)
+            result.ambientOcclusion == c.ambientOcclusion && result.msMedian > settings.maxMs)
             return true;
     }
     return false;

@@ -45,6 +45,12 @@ bool ViewerEventHandler::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActi
         stepFrame(-1);
         aa.requestRedraw();
         return true;
+    case 'o':
+        _scene->setAmbientOcclusion(!_scene->getAmbientOcclusion());
+        std::cout << PROGRAM << ": ambient occlusion " << (_scene->getAmbientOcclusion() ? "on" : "off")
+                  << std::endl;
+        aa.requestRedraw();
+        return true;
     case 'r':
         osgGlyphs::GlyphStateCache::instance()->reloadShaders();
         _reloaded = true;

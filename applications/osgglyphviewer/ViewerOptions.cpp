@@ -163,6 +163,8 @@ bool readViewOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std
         options.clipCaps = true;
     while (arguments.read("--shadows"))
         options.shadows = true;
+    while (arguments.read("--ao"))
+        options.ambientOcclusion = true;
     float r = 0.0f, g = 0.0f, b = 0.0f;
     if (arguments.read("--background", r, g, b))
     {
@@ -250,6 +252,10 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
                                "(osg::ClipPlane's convention); repeat for up to 8 planes.");
     usage.addCommandLineOption("--clip-cap", "Cap the cuts of --clip: cut glyphs show a solid face in the "
                                              "plane, as a sliced solid does.");
+    usage.addCommandLineOption(
+        "--ao", "Ambient occlusion per glyph: each glyph darkened by the neighbours around it, "
+                "computed once per frame of data on the CPU (GlyphCloud::computeOcclusion); "
+                "key o toggles it.");
     usage.addCommandLineOption("--shadows",
                                "Cast shadows (osgShadow's ViewDependentShadowMap) from a light above "
                                "(+z) onto a ground plane under the data and onto the glyphs.");

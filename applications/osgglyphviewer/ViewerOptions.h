@@ -54,7 +54,8 @@ struct ViewerOptions
     osg::Vec4 background = osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f);
     std::vector<osg::Plane> clipPlanes; // --clip A B C D: keep A x + B y + C z + D >= 0
     bool clipCaps = false;
-    bool shadows = false; // --shadows: a shadowed scene with a ground plane
+    bool shadows = false;          // --shadows: a shadowed scene with a ground plane
+    bool ambientOcclusion = false; // --ao: per-glyph ambient occlusion
 
     // Output
     bool offscreen = false;

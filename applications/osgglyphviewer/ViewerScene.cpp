@@ -9,10 +9,12 @@
 #include "ViewerText.h"
 
 #include <chrono>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
+#include <osg/NodeVisitor>
 #include <osgGlyphs/GlyphStateCache>
 #include <thread>
 
@@ -38,7 +40,59 @@ bool ViewerScene::setFrame(std::size_t frame, std::string& error)
     _content->removeChildren(0, _content->getNumChildren());
     _content->addChild(node.get());
     _frame = frame;
+    if (_ambientOcclusion)
+        computeOcclusion(*node);
     return true;
+}
+
+void ViewerScene::setAmbientOcclusion(bool on)
+{
+    _ambientOcclusion = on;
+    if (on)
+        computeOcclusion(*_content);
+    osgGlyphs::setGlyphAmbientOcclusion(*_content->getOrCreateStateSet(), on);
+}
+
+namespace
+{
+
+/** Computes the ambient occlusion of the clouds that have none, with progress on the console
+ * once it has taken a second. */
+class OcclusionVisitor : public osg::NodeVisitor
+{
+public:
+    OcclusionVisitor() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::Drawable& drawable) override
+    {
+        auto* cloud = dynamic_cast<osgGlyphs::GlyphCloud*>(&drawable);
+        if (!cloud || cloud->getOcclusion())
+            return;
+        const auto start = std::chrono::steady_clock::now();
+        auto seconds = [start]
+        { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+        double nextReport = 1.0;
+        osgGlyphs::GlyphOcclusionSettings settings;
+        settings.progress = [&](float done)
+        {
+            if (seconds() < nextReport)
+                return;
+            nextReport = seconds() + 1.0;
+            std::cerr << PROGRAM << ": ambient occlusion of " << cloud->getNumGlyphs()
+                      << " glyphs: " << int(100.0f * done) << "%" << std::endl;
+        };
+        cloud->setOcclusion(cloud->computeOcclusion(settings).get());
+        if (seconds() >= 1.0)
+            std::cerr << PROGRAM << ": ambient occlusion computed in " << std::fixed << std::setprecision(1)
+                      << seconds() << " s" << std::defaultfloat << std::endl;
+    }
+};
+
+}
+
+void ViewerScene::computeOcclusion(osg::Node& node)
+{
+    OcclusionVisitor visitor;
+    node.accept(visitor);
 }
 
 bool ViewerScene::followFile(std::size_t& added, std::string& error)
@@ -247,5 +301,6 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
     scene->setLit(options.mapping.lit);
     scene->setClipPlanes(options.clipPlanes, options.clipCaps);
     scene->setShadows(options.shadows);
+    scene->setAmbientOcclusion(options.ambientOcclusion);
     return scene;
 }

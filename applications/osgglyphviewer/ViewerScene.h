@@ -58,6 +58,11 @@ public:
     /** Whether the scene has its own light, with which the view's headlight must be off. */
     bool hasOwnLight() const { return _shadowedScene.valid(); }
 
+    /** Ambient occlusion per glyph (--ao): computed for every cloud of a frame when it is first
+     * shown with it on, with progress on the console when it takes long. */
+    void setAmbientOcclusion(bool on);
+    bool getAmbientOcclusion() const { return _ambientOcclusion; }
+
     /** Lit or flat glyphs, for every glyph of the scene. */
     void setLit(bool lit);
     bool getLit() const { return _lit; }
@@ -88,11 +93,15 @@ public:
 protected:
     ~ViewerScene() override = default;
 
+    /** Gives the clouds under node that have no ambient occlusion theirs. */
+    static void computeOcclusion(osg::Node& node);
+
     FrameSource _source;
     FrameFollower _follower;
     std::size_t _numFrames;
     std::size_t _frame = 0;
     bool _lit = true;
+    bool _ambientOcclusion = false;
     osgGlyphsData::ColorKey _key;
     osg::ref_ptr<osg::Group> _root;
     osg::ref_ptr<osg::ClipNode> _clipNode;   // between the root (or the shadowed scene) and the content

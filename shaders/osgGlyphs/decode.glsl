@@ -8,6 +8,8 @@
 //   radius / osgGlyphs_radiusScale and the scalar in [0, 1] over the data's range, as floats
 // osgGlyphs_color: RGBA8 per glyph (OSGGLYPHS_COLOR_RGBA only).
 // osgGlyphs_vector: direction and magnitude per glyph (vector shapes only).
+// osgGlyphs_ambientOcclusion: RGBA8 per glyph (OSGGLYPHS_AMBIENT_OCCLUSION only): rgb the model-space
+//   direction term of the light reaching the glyph, mapped from [-1, 1], a its mean.
 // osgGlyphs_position: the glyph's position, for instanced techniques (else gl_Vertex).
 // Vertex stages only.
 
@@ -84,6 +86,11 @@ Glyph decodeGlyph()
     glyph.sphere = vec4(center, glyphRadius() * scale);
     glyph.axis = vec4(0.0);
     glyph.color = glyphColor();
+    glyph.occlusion = vec4(0.0, 0.0, 0.0, 1.0);
+#ifdef OSGGLYPHS_AMBIENT_OCCLUSION
+    glyph.occlusion = vec4(mat3(gl_ModelViewMatrix) * (osgGlyphs_ambientOcclusion.xyz * 2.0 - 1.0) / scale,
+                           osgGlyphs_ambientOcclusion.w);
+#endif
 #ifdef OSGGLYPHS_VECTOR_SHAPE
     vec3 vector = mat3(gl_ModelViewMatrix) * osgGlyphs_vector;
     float magnitude = length(vector);

@@ -19,6 +19,7 @@ in GlyphVertex
     vec4 sphere;
     vec4 axis;
     vec4 color;
+    vec4 occlusion;
 }
 glyphIn[];
 
@@ -27,7 +28,7 @@ glyphIn[];
 
 void main()
 {
-    Glyph glyph = Glyph(glyphIn[0].sphere, glyphIn[0].axis, glyphIn[0].color);
+    Glyph glyph = Glyph(glyphIn[0].sphere, glyphIn[0].axis, glyphIn[0].color, glyphIn[0].occlusion);
     if (!isDrawn(glyph))
         return;
     vec2 corners[4];

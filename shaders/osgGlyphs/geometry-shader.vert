@@ -9,6 +9,7 @@ out GlyphVertex
     vec4 sphere;
     vec4 axis;
     vec4 color;
+    vec4 occlusion;
 }
 glyphOut;
 
@@ -18,5 +19,6 @@ void main()
     glyphOut.sphere = glyph.sphere;
     glyphOut.axis = glyph.axis;
     glyphOut.color = glyph.color;
+    glyphOut.occlusion = glyph.occlusion;
     gl_Position = vec4(glyph.sphere.xyz, 1.0);
 }

@@ -17,6 +17,9 @@ struct Glyph
     vec4 sphere; // centre (vector shapes: the tail's base centre), radius (0: not drawn)
     vec4 axis;   // vector shapes: unit axis, length
     vec4 color;
+    // Per-glyph ambient occlusion (GlyphCloud::setOcclusion): the light reaching a surface point of
+    // unit eye-space normal n is clamp(occlusion.w + dot(occlusion.xyz, n), 0, 1); (0, 0, 0, 1) without.
+    vec4 occlusion;
 };
 
 const float INFINITE_DISTANCE = 1.0e30;

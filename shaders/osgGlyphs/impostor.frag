@@ -150,6 +150,10 @@ void main()
     if (ndcZ > 1.0)
         discard; // beyond the far plane, where fixed-function geometry is clipped too
     gl_FragDepth = windowDepth(ndcZ);
-    color = vec4(shade(fragColor.rgb, position, normal, -direction), fragColor.a);
+    float ambientLight = 1.0;
+#ifdef OSGGLYPHS_AMBIENT_OCCLUSION
+    ambientLight = clamp(fragOcclusion.w + dot(fragOcclusion.xyz, normal), 0.0, 1.0);
+#endif
+    color = vec4(shade(fragColor.rgb, position, normal, -direction, ambientLight), fragColor.a);
     color.rgb = mix(color.rgb, osgGlyphs_highlight.rgb, osgGlyphs_highlight.a);
 }

@@ -28,8 +28,9 @@ float lightReaching(vec3 position, vec3 normal)
 }
 #endif
 
-/** The lit colour of a surface point; normal and toEye are unit eye-space vectors. */
-vec3 shade(vec3 base, vec3 position, vec3 normal, vec3 toEye)
+/** The lit colour of a surface point; normal and toEye are unit eye-space vectors; ambientLight is
+ * the fraction of ambient and diffuse light that occluders let through (1: none occluded). */
+vec3 shade(vec3 base, vec3 position, vec3 normal, vec3 toEye, float ambientLight)
 {
 #ifdef OSGGLYPHS_LIT
     vec4 light = gl_LightSource[0].position;
@@ -47,9 +48,14 @@ vec3 shade(vec3 base, vec3 position, vec3 normal, vec3 toEye)
     }
 #endif
     vec3 ambient = vec3(osgGlyphs_material.x) + gl_LightSource[0].ambient.rgb;
-    return base * (ambient + diffuse * gl_LightSource[0].diffuse.rgb) +
+    return base * ambientLight * (ambient + diffuse * gl_LightSource[0].diffuse.rgb) +
            osgGlyphs_material.y * specular * gl_LightSource[0].specular.rgb;
 #else
     return base;
 #endif
+}
+
+vec3 shade(vec3 base, vec3 position, vec3 normal, vec3 toEye)
+{
+    return shade(base, position, normal, toEye, 1.0);
 }

@@ -12,6 +12,9 @@ flat OSGGLYPHS_VARYING vec4 fragColor;
 #ifdef OSGGLYPHS_VECTOR_SHAPE
 flat OSGGLYPHS_VARYING vec4 fragAxis; // unit axis, length
 #endif
+#ifdef OSGGLYPHS_AMBIENT_OCCLUSION
+flat OSGGLYPHS_VARYING vec4 fragOcclusion; // Glyph.occlusion
+#endif
 
 #ifdef OSGGLYPHS_VARYINGS_OUT
 void writeVaryings(Glyph glyph)
@@ -20,6 +23,9 @@ void writeVaryings(Glyph glyph)
     fragColor = glyph.color;
 #ifdef OSGGLYPHS_VECTOR_SHAPE
     fragAxis = glyph.axis;
+#endif
+#ifdef OSGGLYPHS_AMBIENT_OCCLUSION
+    fragOcclusion = glyph.occlusion;
 #endif
 }
 #endif

@@ -338,8 +338,8 @@ TEST_F(GlyphCloudData, AShaderFileOnTheDataPathOverridesTheEmbeddedCopy)
     {
         std::ofstream file(directory + "/osgGlyphs/lighting.glsl");
         file << "uniform vec3 osgGlyphs_material;\n"
-                "vec3 shade(vec3 base, vec3 position, vec3 normal, vec3 toEye) { return vec3(1.0, 0.0, 1.0); "
-                "}\n";
+                "vec3 shade(vec3 base, vec3 position, vec3 normal, vec3 toEye, float ambientLight) { return "
+                "vec3(1.0, 0.0, 1.0); }\n";
     }
     osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{osg::Vec3(), 1.0f, osg::Vec4ub(0, 255, 0, 255)}});
     osg::ref_ptr<osg::Node> scene = group({cloud.get()});
@@ -467,7 +467,7 @@ TEST_F(GlyphCloudData, AProgramThatDoesNotLinkIsOneLine)
     // Lighting declared and never defined: every stage compiles, the program cannot link.
     std::ofstream(directory + "/osgGlyphs/lighting.glsl")
         << "uniform vec3 osgGlyphs_material;\nvec3 shade(vec3 base, vec3 position, vec3 normal, vec3 "
-           "toEye);\n";
+           "toEye, float ambientLight);\n";
     osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{osg::Vec3(), 1.0f, osg::Vec4ub(0, 255, 0, 255)}});
     osg::ref_ptr<osg::Node> scene = group({cloud.get()});
 

@@ -41,6 +41,8 @@ osg::ref_ptr<GlyphCloud> createFullCloud()
     cloud->setOrigin(osg::Vec3d(0.25, -0.125, 0.5));
     cloud->setCulling(osgGlyphs::GlyphCulling::Frustum);
     cloud->setCullingChunkSize(64);
+    cloud->setOcclusion(makeArray<osg::Vec4ubArray>(
+        {osg::Vec4ub(1, 2, 3, 4), osg::Vec4ub(128, 127, 255, 0), osg::Vec4ub(9, 8, 7, 200)}));
     osg::ref_ptr<osgGlyphsPaper::PolygonsTechnique> polygons = new osgGlyphsPaper::PolygonsTechnique;
     polygons->setResolution(12, 6);
     cloud->setTechnique(polygons.get());
@@ -67,6 +69,7 @@ void expectSameCloud(const GlyphCloud& a, const GlyphCloud& b)
     EXPECT_TRUE(sameBits(a.getRadii(), b.getRadii()));
     EXPECT_TRUE(sameBits(a.getScalars(), b.getScalars()));
     EXPECT_TRUE(sameBits(a.getColors(), b.getColors()));
+    EXPECT_TRUE(sameBits(a.getOcclusion(), b.getOcclusion()));
     EXPECT_EQ(a.getColorMode(), b.getColorMode());
     ASSERT_NE(b.getColorMap(), nullptr);
     EXPECT_EQ(a.getColorMap()->getName(), b.getColorMap()->getName());

@@ -34,7 +34,7 @@ GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
     : osg::Geometry(other, copyop), _origin(other._origin), _positions(copyArray(other._positions, copyop)),
       _radii(copyArray(other._radii, copyop)), _colors(copyArray(other._colors, copyop)),
       _scalars(copyArray(other._scalars, copyop)), _vectors(copyArray(other._vectors, copyop)),
-      _colorMap(other._colorMap),
+      _occlusion(copyArray(other._occlusion, copyop)), _colorMap(other._colorMap),
       _technique(other._technique.valid() ? static_cast<GlyphTechnique*>(copyop(other._technique.get()))
                                           : nullptr),
       _radius(other._radius), _color(other._color), _colorMode(other._colorMode), _shape(other._shape),
@@ -128,6 +128,19 @@ void GlyphCloud::setColors(osg::Vec4ubArray* colors)
         colors->setNormalize(true);
     dirtyGlyphs();
     updateStateSet();
+}
+
+void GlyphCloud::setOcclusion(osg::Vec4ubArray* occlusion)
+{
+    _occlusion = occlusion;
+    if (occlusion)
+    {
+        occlusion->setNormalize(true);
+        if (occlusion->size() < _numGlyphs)
+            OSG_WARN << "osgGlyphs: GlyphCloud::setOcclusion: " << occlusion->size() << " values for "
+                     << _numGlyphs << " glyphs; drawing without ambient occlusion" << std::endl;
+    }
+    buildPrimitives();
 }
 
 void GlyphCloud::setScalars(osg::FloatArray* scalars)
@@ -340,6 +353,7 @@ GlyphArrays GlyphCloud::getGlyphArrays() const
     arrays.radiusScalar = _compressedAttributes ? static_cast<osg::Array*>(_packed.get()) : _unpacked.get();
     arrays.colors = _colorMode == GlyphColorMode::RGBA ? _colors.get() : nullptr;
     arrays.vectors = hasVectorShape() ? _vectors.get() : nullptr;
+    arrays.occlusion = _occlusion.valid() && _occlusion->size() >= _numGlyphs ? _occlusion.get() : nullptr;
     arrays.count = _numGlyphs;
     arrays.order = _chunks ? _chunks->order.get() : nullptr;
     return arrays;
@@ -351,7 +365,11 @@ void GlyphCloud::buildPrimitives()
     const GlyphArrays arrays = getGlyphArrays();
     const auto builtFor =
         std::make_tuple(technique, arrays.positions, arrays.radiusScalar, arrays.colors, arrays.vectors,
-                        arrays.count, static_cast<const osg::PrimitiveSet*>(arrays.order));
+                        arrays.occlusion, arrays.count, static_cast<const osg::PrimitiveSet*>(arrays.order));
+    if (arrays.occlusion)
+        _cloudStateSet->setDefine(GLYPH_AMBIENT_OCCLUSION_DEFINE);
+    else
+        _cloudStateSet->removeDefine(GLYPH_AMBIENT_OCCLUSION_DEFINE);
     if (builtFor == _builtFor && !technique->copiesArrays())
         return; // the same arrays, drawn the same way: changed contents upload by themselves
     _builtFor = builtFor;

@@ -2,6 +2,8 @@
 
 #include "GlyphDefines.h"
 
+#include <osgGlyphs/GlyphStateCache>
+
 #include <osg/VertexAttribDivisor>
 
 using namespace osgGlyphs;
@@ -27,6 +29,8 @@ std::vector<GlyphAttributeBinding> osgGlyphs::getGlyphAttributeBindings(GlyphAtt
                         defined(detail::FLOAT_ATTRIBUTES_DEFINE)});
     bindings.push_back({"osgGlyphs_color", COLOR_ATTRIBUTE, "vec4", defined(detail::COLOR_RGBA_DEFINE)});
     bindings.push_back({"osgGlyphs_vector", VECTOR_ATTRIBUTE, "vec3", defined(detail::VECTOR_SHAPE_DEFINE)});
+    bindings.push_back(
+        {"osgGlyphs_ambientOcclusion", OCCLUSION_ATTRIBUTE, "vec4", defined(GLYPH_AMBIENT_OCCLUSION_DEFINE)});
     return bindings;
 }
 
@@ -45,6 +49,7 @@ void osgGlyphs::attachGlyphArrays(osg::Geometry& geometry, const GlyphArrays& ar
     attach(RADIUS_SCALAR_ATTRIBUTE, arrays.radiusScalar);
     attach(COLOR_ATTRIBUTE, arrays.colors);
     attach(VECTOR_ATTRIBUTE, arrays.vectors);
+    attach(OCCLUSION_ATTRIBUTE, arrays.occlusion);
 }
 
 void osgGlyphs::setInstancedGlyphAttributes(osg::StateSet& stateSet)

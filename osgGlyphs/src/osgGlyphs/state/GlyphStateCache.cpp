@@ -94,6 +94,17 @@ void osgGlyphs::setSurfaceShading(osg::StateSet& stateSet)
     stateSet.addUniform(new osg::Uniform("osgGlyphs_material", GlyphCloud::getDefaultMaterial()));
 }
 
+const char* const osgGlyphs::GLYPH_AMBIENT_OCCLUSION_DEFINE = "OSGGLYPHS_AMBIENT_OCCLUSION";
+
+void osgGlyphs::setGlyphAmbientOcclusion(osg::StateSet& stateSet, bool on)
+{
+    if (on)
+        stateSet.removeDefine(GLYPH_AMBIENT_OCCLUSION_DEFINE);
+    else
+        stateSet.setDefine(GLYPH_AMBIENT_OCCLUSION_DEFINE,
+                           osg::StateAttribute::OVERRIDE | osg::StateAttribute::OFF);
+}
+
 GlyphStateCache* GlyphStateCache::instance()
 {
     static osg::ref_ptr<GlyphStateCache> s_instance = new GlyphStateCache;

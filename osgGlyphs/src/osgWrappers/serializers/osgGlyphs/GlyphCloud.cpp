@@ -180,4 +180,5 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
     ADD_VEC3D_SERIALIZER(Origin, osg::Vec3d());
     ADD_USER_SERIALIZER(Culling);
     ADD_UINT_SERIALIZER(CullingChunkSize, 512u);
+    ADD_OBJECT_SERIALIZER(Occlusion, osg::Vec4ubArray, NULL);
 }
