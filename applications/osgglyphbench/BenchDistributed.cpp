@@ -22,7 +22,7 @@ using osgGlyphsComposite::MPIShare;
 /** The phases of one frame, in ms, each of the slowest process. */
 struct Phases
 {
-    double render = 0.0, readBack = 0.0, composite = 0.0, writeBack = 0.0, total = 0.0;
+    double render = 0.0, readBack = 0.0, wait = 0.0, composite = 0.0, writeBack = 0.0, total = 0.0;
 };
 
 double median(std::vector<double> values)
@@ -69,7 +69,7 @@ bool measure(const MPIShare& mpi, const BenchSettings& settings, osgGlyphs::Glyp
     viewer->getFrameCapture()->setCaptureDepth(false);
     viewer->setSceneData(cloud.get());
 
-    std::vector<double> render, readBack, composite, writeBack, total;
+    std::vector<double> render, readBack, wait, composite, writeBack, total;
     for (unsigned int frame = 0; frame <= settings.frames; ++frame)
     {
         placeCamera(*viewer->getCamera(), frame);
@@ -80,14 +80,16 @@ bool measure(const MPIShare& mpi, const BenchSettings& settings, osgGlyphs::Glyp
         if (frame == 0)
             continue; // shader compilation, buffer uploads
         const ImageCompositor::Timing& t = compositor->getLastTiming();
-        const double others = 1e3 * (t.readBack + t.composite + t.writeBack);
+        const double others = 1e3 * (t.readBack + t.wait + t.composite + t.writeBack);
         render.push_back(mpi.getMaximum(ms - others));
         readBack.push_back(mpi.getMaximum(1e3 * t.readBack));
+        wait.push_back(mpi.getMaximum(1e3 * t.wait));
         composite.push_back(mpi.getMaximum(1e3 * t.composite));
         writeBack.push_back(mpi.getMaximum(1e3 * t.writeBack));
         total.push_back(mpi.getMaximum(ms));
     }
-    result = Phases{median(render), median(readBack), median(composite), median(writeBack), median(total)};
+    result = Phases{median(render),    median(readBack),  median(wait),
+                    median(composite), median(writeBack), median(total)};
     return true;
 }
 
@@ -101,14 +103,14 @@ int runDistributedBenchmark(const BenchSettings& settings)
     if (output && !settings.csvFile.empty())
     {
         csv.open(settings.csvFile);
-        csv << "processes,shape,glyphs,width,height,render_ms,readback_ms,composite_ms,writeback_ms,frame_"
-               "ms\n";
+        csv << "processes,shape,glyphs,width,height,render_ms,readback_ms,wait_ms,composite_ms,writeback_ms,"
+               "frame_ms\n";
     }
     if (output)
         std::printf("%s: sort-last over %d processes, %dx%d, median of %u frames, slowest process per phase\n"
-                    "%-8s %10s %10s %10s %10s %10s %10s\n",
+                    "%-8s %10s %10s %10s %10s %10s %10s %10s\n",
                     PROGRAM, mpi->getSize(), settings.width, settings.height, settings.frames, "shape",
-                    "glyphs", "render ms", "read ms", "compos. ms", "write ms", "frame ms");
+                    "glyphs", "render ms", "read ms", "wait ms", "compos. ms", "write ms", "frame ms");
     for (osgGlyphs::GlyphShape shape : settings.shapes)
     {
         for (unsigned int count : settings.counts)
@@ -124,13 +126,13 @@ int runDistributedBenchmark(const BenchSettings& settings)
             if (!output)
                 continue;
             const char* name = osgGlyphs::getShapeName(shape);
-            std::printf("%-8s %10u %10.1f %10.1f %10.1f %10.1f %10.1f\n", name, count, phases.render,
-                        phases.readBack, phases.composite, phases.writeBack, phases.total);
+            std::printf("%-8s %10u %10.1f %10.1f %10.1f %10.1f %10.1f %10.1f\n", name, count, phases.render,
+                        phases.readBack, phases.wait, phases.composite, phases.writeBack, phases.total);
             std::fflush(stdout);
             if (csv.is_open())
                 csv << mpi->getSize() << "," << name << "," << count << "," << settings.width << ","
-                    << settings.height << "," << phases.render << "," << phases.readBack << ","
-                    << phases.composite << "," << phases.writeBack << "," << phases.total << "\n";
+                    << settings.height << "," << phases.render << "," << phases.readBack << "," << phases.wait
+                    << "," << phases.composite << "," << phases.writeBack << "," << phases.total << "\n";
         }
     }
     return 0;

@@ -10,7 +10,7 @@
  * osgGlyphsComposite composites the pictures onto rank 0, --frames times after a first frame
  * that is not counted. Rank 0 prints, per case, the median over the frames of each phase's time in
  * the slowest process: render (the draw up to glFinish), read-back, composite (IceT, including
- * waiting for the slowest process) and write-back; with --csv, also as CSV. Returns the exit code. */
+ * the wait) and write-back; with --csv, also as CSV. Returns the exit code. */
 int runDistributedBenchmark(const BenchSettings& settings);
 
 #endif

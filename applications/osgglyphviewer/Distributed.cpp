@@ -40,14 +40,15 @@ std::string describePhases(const osgGlyphsComposite::MPIShare& mpi,
                            const osgGlyphsComposite::ImageCompositor& compositor, double frameMilliseconds)
 {
     const osgGlyphsComposite::ImageCompositor::Timing& t = compositor.getLastTiming();
-    const double others = 1e3 * (t.readBack + t.composite + t.writeBack);
+    const double others = 1e3 * (t.readBack + t.wait + t.composite + t.writeBack);
     const double phases[] = {mpi.getMaximum(frameMilliseconds - others), mpi.getMaximum(1e3 * t.readBack),
-                             mpi.getMaximum(1e3 * t.composite), mpi.getMaximum(1e3 * t.writeBack)};
-    char line[200];
+                             mpi.getMaximum(1e3 * t.wait), mpi.getMaximum(1e3 * t.composite),
+                             mpi.getMaximum(1e3 * t.writeBack)};
+    char line[240];
     std::snprintf(line, sizeof(line),
-                  "render %.1f ms, read-back %.1f ms, composite %.1f ms, write-back %.1f ms "
+                  "render %.1f ms, read-back %.1f ms, waiting %.1f ms, composite %.1f ms, write-back %.1f ms "
                   "(the slowest of %d processes in each)",
-                  phases[0], phases[1], phases[2], phases[3], mpi.getSize());
+                  phases[0], phases[1], phases[2], phases[3], phases[4], mpi.getSize());
     return line;
 }
 
