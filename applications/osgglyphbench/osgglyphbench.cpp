@@ -6,6 +6,11 @@
 // (a case's scene, frames, times and coverage), EqualCoverage (--equal-coverage radii),
 // BenchReport (progress, CSV, summary) and BenchPlot (--plot, through gnuplot).
 
+#ifdef OSGGLYPHBENCH_MPI
+#include "BenchDistributed.h"
+
+#include <osgGlyphsComposite/MPIShare>
+#endif
 #include "BenchOptions.h"
 #include "BenchRun.h"
 
@@ -37,5 +42,9 @@ int main(int argc, char** argv)
         std::cerr << "(" << PROGRAM << " --help lists the options)" << std::endl;
         return 1;
     }
+#ifdef OSGGLYPHBENCH_MPI
+    if (osgGlyphsComposite::isLaunchedByMPI())
+        return runDistributedBenchmark(settings);
+#endif
     return runBenchmark(settings);
 }

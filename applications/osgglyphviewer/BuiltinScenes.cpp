@@ -103,7 +103,8 @@ osg::ref_ptr<ViewerScene> createDefaultScene(const ViewerOptions& options, std::
     return scene;
 }
 
-osg::ref_ptr<ViewerScene> createRandomScene(const ViewerOptions& options, std::string& error)
+osg::ref_ptr<ViewerScene> createRandomScene(const ViewerOptions& options, const SceneSharing& sharing,
+                                            std::string& error)
 {
     if (!checkNoColumnOptions(options.mapping, "random", error))
         return nullptr;
@@ -113,8 +114,13 @@ osg::ref_ptr<ViewerScene> createRandomScene(const ViewerOptions& options, std::s
     random.shape = options.mapping.shape;
     random.radius = options.mapping.radius;
     random.lengthScale = options.mapping.lengthScale;
-    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(random);
+    random.share = sharing.share;
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(random, error);
+    if (!cloud)
+        return nullptr;
     osgGlyphsData::applyGlyphStyle(*cloud, options.mapping);
+    if (sharing.shareCloud)
+        sharing.shareCloud(*cloud);
     osg::ref_ptr<ViewerScene> scene =
         createFixedScene(cloud.get(), makeScalarKey("random value", options.mapping, 0.0f, 1.0f));
     scene->setDescription("random dataset: " + std::to_string(random.count) + " " +

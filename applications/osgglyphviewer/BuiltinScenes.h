@@ -12,7 +12,9 @@ osg::ref_ptr<ViewerScene> createFixedScene(osg::Node* content, const osgGlyphsDa
  * height, cutting through a fixed-function box and sphere, seen from its own view. */
 osg::ref_ptr<ViewerScene> createDefaultScene(const ViewerOptions& options, std::string& error);
 
-/** --random N: osgGlyphsData::createRandomCloud, the random dataset of the paper's benchmarks. */
-osg::ref_ptr<ViewerScene> createRandomScene(const ViewerOptions& options, std::string& error);
+/** --random N: osgGlyphsData::createRandomCloud, the random dataset of the paper's benchmarks;
+ * of it, the share of sharing (the same glyphs as in the whole cloud). */
+osg::ref_ptr<ViewerScene> createRandomScene(const ViewerOptions& options, const SceneSharing& sharing,
+                                            std::string& error);
 
 #endif

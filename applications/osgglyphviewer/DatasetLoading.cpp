@@ -74,12 +74,14 @@ private:
 }
 
 osg::ref_ptr<osgGlyphsData::PointDataset> loadDataset(const std::string& file, const std::string& format,
-                                                      bool growing, std::string& error)
+                                                      bool growing, const osgGlyphsData::PointShare& share,
+                                                      std::string& error)
 {
     ProgressIndicator progress(file);
     osgGlyphsData::PointReadOptions options;
     options.format = format;
     options.growing = growing;
+    options.share = share;
     options.progress = [&progress](uint64_t bytesRead, uint64_t totalBytes)
     { progress.update(bytesRead, totalBytes); };
     osg::ref_ptr<osgGlyphsData::PointDataset> dataset = osgGlyphsData::readPointFile(file, options, error);

@@ -4,6 +4,7 @@
 #define OSGGLYPHVIEWER_DATASETLOADING_H 1
 
 #include <osgGlyphsData/PointData>
+#include <osgGlyphsData/PointShare>
 
 #include <cstddef>
 #include <string>
@@ -14,7 +15,8 @@
  * Returns nullptr with the reader's one-line error ("<file>:<line>: <what>"). A growing file (a
  * dump being written) may end in a frame half written and may hold no frame yet. */
 osg::ref_ptr<osgGlyphsData::PointDataset> loadDataset(const std::string& file, const std::string& format,
-                                                      bool growing, std::string& error);
+                                                      bool growing, const osgGlyphsData::PointShare& share,
+                                                      std::string& error);
 
 /** Appends to a dataset the frames its file completed since it was read (osgglyphviewer --follow). */
 class DatasetFollower

@@ -101,14 +101,18 @@ bool showNextFrame(ViewerScene& scene, double timeout, std::string& error)
 }
 
 int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
-                    std::chrono::steady_clock::time_point start)
+                    std::chrono::steady_clock::time_point start, const OffscreenSharing& sharing)
 {
+    const auto agree = [&sharing](bool ok, std::string& error)
+    { return sharing.agree ? sharing.agree(ok, error) : ok; };
     osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer =
         new osgGlyphsHeadless::OffscreenViewer(options.width, options.height, options.backend);
-    if (!viewer->valid())
+    std::string contextError = std::string("cannot create a headless OpenGL context through ") +
+                               osgGlyphsHeadless::getHeadlessBackendName(options.backend);
+    if (!agree(viewer->valid(), contextError))
     {
-        std::cerr << PROGRAM << ": cannot create a headless OpenGL context through "
-                  << osgGlyphsHeadless::getHeadlessBackendName(options.backend) << std::endl;
+        if (sharing.output)
+            std::cerr << PROGRAM << ": " << contextError << std::endl;
         return 1;
     }
     const double aspect = static_cast<double>(options.width) / options.height;
@@ -120,8 +124,10 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
         viewer->setLightingMode(osg::View::NO_LIGHT);
 
     // The legend is drawn after the scene: depth and projection are read before it.
-    osg::ref_ptr<osgGlyphsHeadless::FrameCapture> sceneCapture;
-    if (!options.depthOutput.empty())
+    osg::ref_ptr<osgGlyphsHeadless::FrameCapture> sceneCapture = sharing.compositor;
+    if (sceneCapture.valid())
+        camera->setPostDrawCallback(sceneCapture.get());
+    else if (!options.depthOutput.empty())
     {
         sceneCapture = new osgGlyphsHeadless::FrameCapture;
         camera->setPostDrawCallback(sceneCapture.get());
@@ -130,7 +136,8 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
 
     const CameraView home = options.hasCamera ? options.camera : scene.getHomeView(options.fov, aspect);
     setProjectionForView(*camera, options.fov, aspect, home);
-    warnIfGlyphsHidden(*scene.getContent(), *camera, home);
+    if (!sharing.compositor.valid()) // a share may well be out of view
+        warnIfGlyphsHidden(*scene.getContent(), *camera, home);
     const unsigned int frames = options.frames > 0 ? options.frames : 1;
     std::vector<double> times;
     for (unsigned int frame = 0; frame < frames; ++frame)
@@ -156,19 +163,30 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
                           << millisecondsSince(pagingStart) << " ms" << std::endl;
         }
         error = osgGlyphs::GlyphStateCache::instance()->getProgramError();
-        if (!error.empty())
+        if (!agree(error.empty(), error))
         {
-            std::cerr << PROGRAM << ": " << error << std::endl;
+            if (sharing.output)
+                std::cerr << PROGRAM << ": " << error << std::endl;
             return 1;
+        }
+        if (sharing.describeFrame)
+        {
+            const std::string line = sharing.describeFrame(times.back());
+            if (sharing.output && options.frames > 0)
+                std::cout << PROGRAM << ": frame " << frame << ": " << line << std::endl;
         }
         if (frame > 0 && !scene.isFollowing())
             continue;
 
-        if (!writeOutputs(*viewer, sceneCapture.get(), options, error))
+        const bool written = !sharing.output || writeOutputs(*viewer, sceneCapture.get(), options, error);
+        if (!agree(written, error))
         {
-            std::cerr << PROGRAM << ": " << error << std::endl;
+            if (sharing.output)
+                std::cerr << PROGRAM << ": " << error << std::endl;
             return 1;
         }
+        if (!sharing.output)
+            continue;
         const std::string size =
             std::to_string(options.width) + "x" + std::to_string(options.height) + ", " +
             osgGlyphsHeadless::getHeadlessBackendName(viewer->getContext()->getBackend());
@@ -188,7 +206,7 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
             std::cout << formatPick(pickGlyph(*viewer, *scene.getContent(), x, y)) << std::endl;
         }
     }
-    if (options.frames > 0)
+    if (options.frames > 0 && sharing.output)
         std::cout << formatFrameTimes(times) << std::endl;
     return 0;
 }

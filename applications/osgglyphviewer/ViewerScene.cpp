@@ -219,11 +219,18 @@ bool waitForFrames(DatasetFollower& follower, const osgGlyphsData::PointDataset&
     return true;
 }
 
-osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, std::string& error)
+/** Whether every process succeeded; alone, whether this one did. */
+bool agree(const SceneSharing& sharing, bool ok, std::string& error)
+{
+    return sharing.agree ? sharing.agree(ok, error) : ok;
+}
+
+osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, const SceneSharing& sharing,
+                                             std::string& error)
 {
     osg::ref_ptr<osgGlyphsData::PointDataset> dataset =
-        loadDataset(options.file, options.format, options.follow, error);
-    if (!dataset)
+        loadDataset(options.file, options.format, options.follow, sharing.share, error);
+    if (!agree(sharing, dataset.valid(), error))
         return nullptr;
     std::shared_ptr<DatasetFollower> follower;
     if (options.follow)
@@ -240,13 +247,16 @@ osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, std::
         return nullptr;
     }
     osgGlyphsData::GlyphMapper mapper(options.mapping);
-    if (!mapper.prepare(*dataset, options.frame, error))
+    mapper.setReduction(sharing.reduction.get());
+    if (!agree(sharing, mapper.prepare(*dataset, options.frame, error), error))
         return nullptr;
-    ViewerScene::FrameSource source = [dataset, mapper](std::size_t frame, std::string& frameError)
+    ViewerScene::FrameSource source = [dataset, mapper, sharing](std::size_t frame, std::string& frameError)
     {
         osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = mapper.createCloud(*dataset->getFrame(frame), frameError);
-        if (!cloud)
+        if (!agree(sharing, cloud.valid(), frameError))
             return osg::ref_ptr<osg::Node>();
+        if (sharing.shareCloud)
+            sharing.shareCloud(*cloud);
         return osg::ref_ptr<osg::Node>(cloud); // not in a Geode: see BuiltinScenes.cpp
     };
     osg::ref_ptr<ViewerScene> scene = new ViewerScene(source, dataset->getNumFrames(), mapper.getColorKey());
@@ -279,7 +289,8 @@ osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, std::
 
 }
 
-osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::string& error)
+osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::string& error,
+                                            const SceneSharing& sharing)
 {
     if (options.file.empty() && options.frame > 0)
     {
@@ -291,9 +302,9 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
     if (!options.file.empty() && isTileArchive(options.file))
         scene = createTileScene(options, error);
     else if (!options.file.empty())
-        scene = createDatasetScene(options, error);
+        scene = createDatasetScene(options, sharing, error);
     else if (options.randomCount > 0)
-        scene = createRandomScene(options, error);
+        scene = createRandomScene(options, sharing, error);
     else
         scene = createDefaultScene(options, error);
     if (!scene || !scene->setFrame(options.frame, error))

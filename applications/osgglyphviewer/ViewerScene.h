@@ -119,8 +119,26 @@ protected:
  * from 1 and 1000). */
 void setProjectionForView(osg::Camera& camera, double fovY, double aspect, const CameraView& view);
 
+/** How a process that draws one share of a scene split over processes (mpirun) makes its part:
+ * by default the whole scene, alone. */
+struct SceneSharing
+{
+    /** The share of the points this process reads or generates. */
+    osgGlyphsData::PointShare share;
+    /** Combines over the processes what depends on the whole dataset (colour range, radius). */
+    osg::ref_ptr<const osgGlyphsData::ShareReduction> reduction;
+    /** Collective: whether every process succeeded, else the first failure's error in all. */
+    std::function<bool(bool ok, std::string& error)> agree;
+    /** Collective: called with the cloud of each frame in every process (shared bounds). */
+    std::function<void(osgGlyphs::GlyphCloud& cloud)> shareCloud;
+
+    bool isShared() const { return static_cast<bool>(agree); }
+};
+
 /** The scene the options ask for: the built-in scene, --random, or a file (read with progress)
- * mapped to glyphs, at --frame. Returns nullptr with a one-line error. */
-osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::string& error);
+ * mapped to glyphs, at --frame. Returns nullptr with a one-line error. With sharing, a file or
+ * --random, of which this process holds sharing.share; every process must call it. */
+osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::string& error,
+                                            const SceneSharing& sharing = SceneSharing());
 
 #endif

@@ -5,6 +5,11 @@
 // lighting, legend), ColorLegend (the HUD), ViewerCamera (framing, --frames), Headless
 // (--offscreen, --output, --depth-output), Interactive and ViewerEventHandler (the window).
 
+#ifdef OSGGLYPHVIEWER_MPI
+#include "Distributed.h"
+
+#include <osgGlyphsComposite/MPIShare>
+#endif
 #include "Headless.h"
 #include "Interactive.h"
 #include "ViewerOptions.h"
@@ -44,8 +49,13 @@ int main(int argc, char** argv)
 
     ViewerOptions options;
     std::string error;
+    const bool optionsRead = readViewerOptions(arguments, options, error);
+#ifdef OSGGLYPHVIEWER_MPI
+    if (osgGlyphsComposite::isLaunchedByMPI())
+        return renderDistributed(optionsRead, options, error, start);
+#endif
     osg::ref_ptr<ViewerScene> scene;
-    if (readViewerOptions(arguments, options, error))
+    if (optionsRead)
         scene = createViewerScene(options, error);
     if (!scene)
     {

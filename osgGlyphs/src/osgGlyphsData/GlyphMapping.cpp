@@ -245,6 +245,16 @@ bool GlyphMapper::computeScalars(const PointData& data, std::vector<float>& scal
     return true;
 }
 
+void GlyphMapper::combineMean(double& sum, std::size_t& count) const
+{
+    if (!_reduction.valid())
+        return;
+    std::vector<double> totals{sum, static_cast<double>(count)};
+    _reduction->sum(totals);
+    sum = totals[0];
+    count = static_cast<std::size_t>(totals[1]);
+}
+
 bool GlyphMapper::computeRange(const PointDataset& dataset, std::string& error)
 {
     if (_options.hasRange)
@@ -270,6 +280,14 @@ bool GlyphMapper::computeRange(const PointDataset& dataset, std::string& error)
                 high = std::max(high, value);
             }
         }
+    }
+    if (_reduction.valid())
+    {
+        std::vector<double> lows{low}, highs{high};
+        _reduction->minimum(lows);
+        _reduction->maximum(highs);
+        low = static_cast<float>(lows[0]);
+        high = static_cast<float>(highs[0]);
     }
     if (!(low <= high))
     {
@@ -317,6 +335,7 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
                 ++count;
             }
         }
+        combineMean(sum, count);
         typical = count ? static_cast<float>(sum / count) : 1.0f;
     }
     else if (_options.radius > 0.0f)
@@ -330,8 +349,17 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
             if (std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()))
                 box.expandBy(osg::Vec3d(p));
         }
+        if (_reduction.valid())
+        {
+            std::vector<double> low(box._min.ptr(), box._min.ptr() + 3),
+                high(box._max.ptr(), box._max.ptr() + 3);
+            _reduction->minimum(low);
+            _reduction->maximum(high);
+            box.set(low[0], low[1], low[2], high[0], high[1], high[2]);
+        }
         const double diagonal = box.valid() ? (box._max - box._min).length() : 0.0;
-        const double spacing = detail::estimateNeighbourDistance(positions);
+        const double spacing = _reduction.valid() ? detail::estimateNeighbourDistance(positions, *_reduction)
+                                                  : detail::estimateNeighbourDistance(positions);
         const double radius =
             std::max(spacing * (vectorShape ? 0.2 : 0.4), diagonal / (vectorShape ? 500.0 : 250.0));
         typical = _radius =
@@ -354,6 +382,7 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
                 ++count;
             }
         }
+        combineMean(sum, count);
         if (count)
             _lengthScale = static_cast<float>(4.0 * typical / (sum / count));
     }
@@ -385,6 +414,14 @@ void GlyphMapper::buildCategoryKey(const PointData& data)
             values.insert(std::lround(value));
         if (values.size() > MAX_KEY_CATEGORIES)
             break;
+    }
+    if (_reduction.valid())
+    {
+        std::vector<double> all(values.begin(), values.end());
+        _reduction->gather(all);
+        values.clear();
+        for (double value : all)
+            values.insert(static_cast<long>(value));
     }
     const std::vector<std::string>& labels = data.getColumnLabels(column);
     for (long value : values)

@@ -69,9 +69,12 @@ public:
     /** The squared distance from point index to its nearest neighbour at a distance > 0, or
      * infinity when none is found within SEARCH_BUDGET. The search looks into shells of cells
      * around the point's cell, only at the cells of each shell that lie in the grid. */
-    double nearestDistance2(uint32_t index) const
+    double nearestDistance2(uint32_t index) const { return nearestDistance2(toDouble(_positions[index])); }
+
+    /** The same for any point, in the grid or not. */
+    double nearestDistance2(const osg::Vec3d& point) const
     {
-        Search search{toDouble(_positions[index]), cellOf(_positions[index])};
+        Search search{point, cellOf(point)};
         const Cell& c = search.centre;
         const int lastRing =
             std::max({c.i, _dims[0] - 1 - c.i, c.j, _dims[1] - 1 - c.j, c.k, _dims[2] - 1 - c.k});
@@ -149,13 +152,13 @@ private:
     {
         std::vector<uint32_t> start(static_cast<std::size_t>(_dims[0]) * _dims[1] * _dims[2] + 1, 0);
         for (uint32_t index : indices)
-            ++start[cellIndex(cellOf(_positions[index])) + 1];
+            ++start[cellIndex(cellOf(toDouble(_positions[index]))) + 1];
         for (std::size_t cell = 1; cell < start.size(); ++cell)
             start[cell] += start[cell - 1];
         std::vector<uint32_t> sorted(indices.size());
         std::vector<uint32_t> next(start.begin(), start.end() - 1);
         for (uint32_t index : indices)
-            sorted[next[cellIndex(cellOf(_positions[index]))]++] = index;
+            sorted[next[cellIndex(cellOf(toDouble(_positions[index])))]++] = index;
 
         auto byPosition = [this](uint32_t a, uint32_t b)
         { return lessByPosition(_positions[a], _positions[b]); };
@@ -178,7 +181,7 @@ private:
         }
     }
 
-    Cell cellOf(const osg::Vec3f& p) const
+    Cell cellOf(const osg::Vec3d& p) const
     {
         auto axis = [&](int a)
         {
@@ -201,16 +204,14 @@ private:
     std::vector<uint32_t> _sorted;
 };
 
-}
-
-double osgGlyphsData::detail::estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions,
-                                                        unsigned int maxSamples)
+/** The indices of the finite positions and their box (empty: +infinity to -infinity). */
+void findFinite(const std::vector<osg::Vec3f>& positions, std::vector<uint32_t>& finite, osg::Vec3d& boxMin,
+                osg::Vec3d& boxMax)
 {
-    std::vector<uint32_t> finite;
     finite.reserve(positions.size());
-    osg::Vec3d boxMin(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                      std::numeric_limits<double>::infinity());
-    osg::Vec3d boxMax = -boxMin;
+    boxMin.set(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+               std::numeric_limits<double>::infinity());
+    boxMax = -boxMin;
     for (std::size_t i = 0; i < positions.size() && i < std::numeric_limits<uint32_t>::max(); ++i)
     {
         const osg::Vec3f& p = positions[i];
@@ -224,6 +225,25 @@ double osgGlyphsData::detail::estimateNeighbourDistance(const std::vector<osg::V
             }
         }
     }
+}
+
+double medianDistance(std::vector<double>& distances2)
+{
+    if (distances2.empty())
+        return 0.0;
+    auto median = distances2.begin() + distances2.size() / 2;
+    std::nth_element(distances2.begin(), median, distances2.end());
+    return std::sqrt(*median);
+}
+
+}
+
+double osgGlyphsData::detail::estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions,
+                                                        unsigned int maxSamples)
+{
+    std::vector<uint32_t> finite;
+    osg::Vec3d boxMin, boxMax;
+    findFinite(positions, finite, boxMin, boxMax);
     if (finite.size() < 2 || boxMin == boxMax)
         return 0.0;
 
@@ -241,9 +261,60 @@ double osgGlyphsData::detail::estimateNeighbourDistance(const std::vector<osg::V
         if (std::isfinite(d2))
             distances2.push_back(d2);
     }
-    if (distances2.empty())
+    return medianDistance(distances2);
+}
+
+double osgGlyphsData::detail::estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions,
+                                                        const ShareReduction& reduction,
+                                                        unsigned int maxSamples)
+{
+    std::vector<uint32_t> finite;
+    osg::Vec3d boxMin, boxMax;
+    findFinite(positions, finite, boxMin, boxMax);
+    std::vector<double> low(boxMin.ptr(), boxMin.ptr() + 3), high(boxMax.ptr(), boxMax.ptr() + 3);
+    reduction.minimum(low);
+    reduction.maximum(high);
+    // Where this share's finite points are among all of them, in share order.
+    std::vector<double> counts{static_cast<double>(finite.size())};
+    reduction.gather(counts);
+    const unsigned int index = reduction.getShare().index;
+    uint64_t total = 0, first = 0;
+    for (std::size_t share = 0; share < counts.size(); ++share)
+    {
+        first += share < index ? static_cast<uint64_t>(counts[share]) : 0;
+        total += static_cast<uint64_t>(counts[share]);
+    }
+    boxMin.set(low[0], low[1], low[2]);
+    boxMax.set(high[0], high[1], high[2]);
+    if (total < 2 || boxMin == boxMax)
         return 0.0;
-    auto median = distances2.begin() + distances2.size() / 2;
-    std::nth_element(distances2.begin(), median, distances2.end());
-    return std::sqrt(*median);
+
+    // The samples of one process holding every point, every stride-th finite point, to all.
+    const uint64_t stride = std::max<uint64_t>(1, total / std::max(1u, maxSamples));
+    std::vector<double> samples;
+    for (uint64_t s = (first + stride - 1) / stride * stride; s < first + finite.size(); s += stride)
+    {
+        const osg::Vec3f& p = positions[finite[s - first]];
+        samples.insert(samples.end(), {double(p.x()), double(p.y()), double(p.z())});
+    }
+    reduction.gather(samples);
+
+    // Each sample's nearest neighbour is the nearest of those each share finds.
+    std::vector<double> distances2(samples.size() / 3, std::numeric_limits<double>::infinity());
+    if (!finite.empty())
+    {
+        const PointGrid grid(positions, finite, boxMin, boxMax);
+        std::unique_ptr<PointGrid> distinct;
+        if (2 * grid.getPoints().size() <= finite.size())
+            distinct = std::make_unique<PointGrid>(positions, grid.getPoints(), boxMin, boxMax);
+        const PointGrid& search = distinct ? *distinct : grid;
+        for (std::size_t s = 0; s < distances2.size(); ++s)
+            distances2[s] =
+                search.nearestDistance2(osg::Vec3d(samples[3 * s], samples[3 * s + 1], samples[3 * s + 2]));
+    }
+    reduction.minimum(distances2);
+    distances2.erase(
+        std::remove_if(distances2.begin(), distances2.end(), [](double d2) { return !std::isfinite(d2); }),
+        distances2.end());
+    return medianDistance(distances2);
 }

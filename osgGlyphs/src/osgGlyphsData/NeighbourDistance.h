@@ -3,6 +3,8 @@
 #ifndef OSGGLYPHS_NEIGHBOURDISTANCE_H
 #define OSGGLYPHS_NEIGHBOURDISTANCE_H 1
 
+#include <osgGlyphsData/PointShare>
+
 #include <osg/Vec3f>
 
 #include <vector>
@@ -20,6 +22,13 @@ namespace detail
  * neighbour found by then (none: the sample is left out), so that no layout of the points (flat,
  * collinear, coincident, clustered) makes it slow. */
 double estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions, unsigned int maxSamples = 2000);
+
+/** The same over the positions of every process of a reduction, each holding its share (in share
+ * order): the samples are those of one process holding every point, each process finds their
+ * nearest neighbours among its points, the nearest of those is the sample's. The result equals
+ * the single-process one unless a search ends on its work bound in one of them. */
+double estimateNeighbourDistance(const std::vector<osg::Vec3f>& positions, const ShareReduction& reduction,
+                                 unsigned int maxSamples = 2000);
 
 }
 }

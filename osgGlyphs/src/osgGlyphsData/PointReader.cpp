@@ -130,6 +130,12 @@ osg::ref_ptr<PointDataset> osgGlyphsData::readPointStream(std::istream& stream, 
         return nullptr;
     }
 
+    std::string shareError;
+    if (!checkPointShare(options.share, shareError))
+    {
+        error = nameForMessages + ": " + shareError;
+        return nullptr;
+    }
     const uint64_t size = remainingStreamSize(stream);
     TextScanner scanner(stream, nameForMessages, size, options.progress, options.start.offset,
                         options.start.line);

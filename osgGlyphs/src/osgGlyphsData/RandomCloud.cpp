@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <random>
 
 using namespace osgGlyphs;
@@ -23,10 +24,12 @@ enum class Stream : unsigned int
 class UniformFloats
 {
 public:
-    UniformFloats(unsigned int seed, Stream stream)
+    /** Starts after the first skipped values of the stream. */
+    UniformFloats(unsigned int seed, Stream stream, uint64_t skipped)
     {
         std::seed_seq sequence{seed, static_cast<unsigned int>(stream)};
         _engine.seed(sequence);
+        _engine.discard(skipped);
     }
 
     /** 24 random bits: every float in [0, 1) of that resolution, equally likely. */
@@ -36,12 +39,13 @@ private:
     std::mt19937 _engine;
 };
 
-osg::ref_ptr<osg::Vec3Array> createPositions(unsigned int count, unsigned int seed)
+osg::ref_ptr<osg::Vec3Array> createPositions(PointRange range, unsigned int seed)
 {
-    UniformFloats uniform(seed, Stream::Positions);
+    const uint64_t count = range.end - range.begin;
+    UniformFloats uniform(seed, Stream::Positions, 3 * range.begin);
     osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
     positions->reserve(count);
-    for (unsigned int i = 0; i < count; ++i)
+    for (uint64_t i = 0; i < count; ++i)
     {
         const float x = uniform(), y = uniform(), z = uniform();
         positions->push_back(osg::Vec3(x, y, z));
@@ -49,24 +53,26 @@ osg::ref_ptr<osg::Vec3Array> createPositions(unsigned int count, unsigned int se
     return positions;
 }
 
-osg::ref_ptr<osg::FloatArray> createScalars(unsigned int count, unsigned int seed)
+osg::ref_ptr<osg::FloatArray> createScalars(PointRange range, unsigned int seed)
 {
-    UniformFloats uniform(seed, Stream::Scalars);
+    const uint64_t count = range.end - range.begin;
+    UniformFloats uniform(seed, Stream::Scalars, range.begin);
     osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray;
     scalars->reserve(count);
-    for (unsigned int i = 0; i < count; ++i)
+    for (uint64_t i = 0; i < count; ++i)
         scalars->push_back(uniform());
     return scalars;
 }
 
 /** Directions uniform on the unit sphere (uniform height and azimuth, Archimedes), times a
  * magnitude uniform in [0.5, 1]. */
-osg::ref_ptr<osg::Vec3Array> createVectors(unsigned int count, unsigned int seed)
+osg::ref_ptr<osg::Vec3Array> createVectors(PointRange range, unsigned int seed)
 {
-    UniformFloats uniform(seed, Stream::Vectors);
+    const uint64_t count = range.end - range.begin;
+    UniformFloats uniform(seed, Stream::Vectors, 3 * range.begin);
     osg::ref_ptr<osg::Vec3Array> vectors = new osg::Vec3Array;
     vectors->reserve(count);
-    for (unsigned int i = 0; i < count; ++i)
+    for (uint64_t i = 0; i < count; ++i)
     {
         const float z = 2.0f * uniform() - 1.0f;
         const float azimuth = 2.0f * osg::PIf * uniform();
@@ -88,16 +94,28 @@ float osgGlyphsData::getDefaultRandomRadius(unsigned int count)
 osg::ref_ptr<GlyphCloud> osgGlyphsData::createRandomCloud(const RandomCloudOptions& options)
 {
     const float radius = options.radius > 0.0f ? options.radius : getDefaultRandomRadius(options.count);
+    const PointRange range = getShareRange(options.share, options.count);
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
-    cloud->setPositions(createPositions(options.count, options.seed).get());
+    cloud->setPositions(createPositions(range, options.seed).get());
     cloud->setRadius(radius);
-    cloud->setScalars(createScalars(options.count, options.seed).get());
+    cloud->setScalars(createScalars(range, options.seed).get());
     cloud->setScalarRange(0.0f, 1.0f);
     if (options.shape != GlyphShape::Sphere)
     {
-        cloud->setVectors(createVectors(options.count, options.seed).get());
+        cloud->setVectors(createVectors(range, options.seed).get());
         cloud->setLengthScale(options.lengthScale > 0.0f ? options.lengthScale : 4.0f * radius);
     }
     cloud->setShape(options.shape);
     return cloud;
+}
+
+osg::ref_ptr<GlyphCloud> osgGlyphsData::createRandomCloud(const RandomCloudOptions& options,
+                                                          std::string& error)
+{
+    if (!checkPointShare(options.share, error))
+    {
+        error = "random cloud: " + error;
+        return nullptr;
+    }
+    return createRandomCloud(options);
 }

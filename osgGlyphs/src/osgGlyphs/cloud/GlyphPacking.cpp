@@ -157,6 +157,40 @@ std::vector<unsigned int> GlyphCloud::updateSkipped(bool positions, bool radii, 
     return flipped;
 }
 
+GlyphCloud::PackingScales GlyphCloud::getOwnPackingScales() const
+{
+    PackingScales scales;
+    scales.scalarMin = std::numeric_limits<float>::max();
+    scales.scalarMax = std::numeric_limits<float>::lowest();
+    for (unsigned int i = 0; _scalars.valid() && i < _numGlyphs; ++i)
+    {
+        const float s = (*_scalars)[i];
+        if (std::isfinite(s))
+        {
+            scales.scalarMin = std::min(scales.scalarMin, s);
+            scales.scalarMax = std::max(scales.scalarMax, s);
+        }
+    }
+    for (unsigned int i = 0; _radii.valid() && i < _numGlyphs; ++i)
+        if (std::isfinite((*_radii)[i]))
+            scales.largestRadius = std::max(scales.largestRadius, (*_radii)[i]);
+    return scales;
+}
+
+void GlyphCloud::setSharedPackingScales(const PackingScales& scales)
+{
+    _hasSharedScales = true;
+    _sharedScales = scales;
+    updateDataRange();
+    updateRadiusScale();
+    packRadii();
+    packScalars();
+    updateScalarMapping();
+    updateChunks(); // the chunk boxes hold the radii as the GPU decodes them
+    buildPrimitives();
+    dirtyBound();
+}
+
 void GlyphCloud::updateDataRange()
 {
     _dataMin = std::numeric_limits<float>::max();
@@ -169,6 +203,11 @@ void GlyphCloud::updateDataRange()
             _dataMin = std::min(_dataMin, s);
             _dataMax = std::max(_dataMax, s);
         }
+    }
+    if (_hasSharedScales)
+    {
+        _dataMin = _sharedScales.scalarMin;
+        _dataMax = _sharedScales.scalarMax;
     }
     if (_dataMin > _dataMax)
         _dataMin = _dataMax = 0.0f;
@@ -190,6 +229,8 @@ void GlyphCloud::updateRadiusScale()
         for (unsigned int i = 0; i < _numGlyphs; ++i)
             if (std::isfinite((*_radii)[i]))
                 _radiusScale = std::max(_radiusScale, (*_radii)[i]);
+        if (_hasSharedScales)
+            _radiusScale = _sharedScales.largestRadius;
     }
     _radiusScaleUniform->set(_radiusScale);
 }

@@ -54,7 +54,16 @@ std::vector<std::string> osgGlyphsData::readers::componentNames(const std::strin
     return names;
 }
 
-ColumnTable::ColumnTable(TextScanner& scanner) : _scanner(scanner), _rows(0) {}
+ColumnTable::ColumnTable(TextScanner& scanner, const PointShare& share)
+    : _scanner(scanner), _rows(0), _share(share)
+{
+}
+
+void ColumnTable::setRowCount(uint64_t rows)
+{
+    _hasRowCount = true;
+    _range = getShareRange(_share, rows);
+}
 
 std::size_t ColumnTable::addColumn(const std::string& name, Kind kind)
 {
@@ -82,6 +91,8 @@ std::size_t ColumnTable::addColumn(const std::string& name, Kind kind)
 
 void ColumnTable::reserve(std::size_t rows)
 {
+    if (_hasRowCount)
+        rows = static_cast<std::size_t>(std::min<uint64_t>(rows, _range.end - _range.begin));
     for (Column& column : _columns)
         column.values.reserve(rows);
 }
@@ -102,6 +113,12 @@ void ColumnTable::appendRow(std::string_view line)
     const char* p = line.data();
     const char* end = p + line.size();
     const std::size_t count = _columns.size();
+    if (count > 0 && !keeps(_columns[0].seen))
+    {
+        for (Column& column : _columns)
+            ++column.seen;
+        return;
+    }
     for (std::size_t c = 0; c < count; ++c)
     {
         p = skipBlanks(p, end);
@@ -120,6 +137,7 @@ void ColumnTable::appendRow(std::string_view line)
                 withinFloatRange(value))
             {
                 appendNumber(column, value);
+                ++column.seen;
                 p = result.ptr;
                 continue;
             }
@@ -152,6 +170,8 @@ void ColumnTable::readRows(uint64_t done, uint64_t count, const std::string& sec
 void ColumnTable::appendField(std::size_t index, std::string_view field)
 {
     Column& column = _columns[index];
+    if (!keeps(column.seen++))
+        return;
     switch (column.kind)
     {
     case Number:
@@ -219,6 +239,8 @@ void ColumnTable::appendLabel(Column& column, std::string_view field)
 void ColumnTable::appendValue(std::size_t index, double value, uint64_t offset)
 {
     Column& column = _columns[index];
+    if (!keeps(column.seen++))
+        return;
     if (!withinFloatRange(value))
     {
         std::ostringstream text;

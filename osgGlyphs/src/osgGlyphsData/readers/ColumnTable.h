@@ -6,6 +6,7 @@
 #include "TextScanner.h"
 
 #include <osgGlyphsData/PointData>
+#include <osgGlyphsData/PointShare>
 
 #include <cstddef>
 #include <functional>
@@ -50,7 +51,13 @@ public:
     /** Where float values lose a thousandth of a unit (2^16: floats step by 1/128 there). */
     static constexpr double FarFromZero = 65536.0;
 
-    explicit ColumnTable(TextScanner& scanner);
+    /** A table of the rows of share: with setRowCount(), the share's range of the rows (see
+     * getShareRange()); without, every share.count-th row from row share.index. The other rows are
+     * counted and skipped unparsed. */
+    explicit ColumnTable(TextScanner& scanner, const PointShare& share = PointShare());
+
+    /** The number of rows the file says the table has, which decides the rows of the share. */
+    void setRowCount(uint64_t rows);
 
     /** Adds a column; fails at the scanner's current line when the name (or, for Species, one of
      * "element" and "species") is taken or empty. Returns its index. */
@@ -95,11 +102,17 @@ private:
         std::string name;
         Kind kind;
         std::vector<float> values;
+        uint64_t seen = 0; // rows of the file, in the share and out of it
         double origin = 0.0;
         std::vector<std::string> labels;
         std::map<std::string, float, std::less<>> indices;
     };
 
+    /** Whether the table keeps row (of the file, from 0): it is in the share. */
+    bool keeps(uint64_t row) const
+    {
+        return _hasRowCount ? row >= _range.begin && row < _range.end : row % _share.count == _share.index;
+    }
     void appendLabel(Column& column, std::string_view field);
     /** Appends a finite number within the range of a float. */
     static void appendNumber(Column& column, double value);
@@ -108,6 +121,9 @@ private:
     std::vector<Column> _columns;
     std::set<std::string> _outputNames;
     std::size_t _rows;
+    PointShare _share;
+    bool _hasRowCount = false;
+    PointRange _range;
 };
 
 } // namespace readers

@@ -86,7 +86,7 @@ void osgGlyphsData::readers::readCsv(TextScanner& scanner, PointDataset& dataset
     }
     if (allNumbers)
         scanner.fail("the first line must name the columns, found " + quote(trim(line)));
-    ColumnTable table(scanner);
+    ColumnTable table(scanner, options.share);
     for (std::string_view field : fields)
     {
         for (char c : field)

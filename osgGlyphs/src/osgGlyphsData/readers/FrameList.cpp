@@ -11,7 +11,7 @@ FrameList::FrameList(TextScanner& scanner, PointDataset& dataset, const PointRea
     _dataset.setEndOfCompleteFrames(options.start);
 }
 
-void FrameList::add(PointData* frame, uint64_t firstLine)
+void FrameList::add(PointData* frame, uint64_t firstLine, uint64_t filePoints)
 {
     const uint64_t number = _fileFrame + 1;
     if (_options.growing && !_scanner.isLineTerminated() && _scanner.atEnd())
@@ -23,7 +23,7 @@ void FrameList::add(PointData* frame, uint64_t firstLine)
     }
     ++_fileFrame;
     _dataset.setEndOfCompleteFrames({_scanner.getOffset(), _scanner.getLineNumber(), _fileFrame});
-    if (frame->getNumPoints() > 0)
+    if (filePoints > 0)
     {
         _dataset.addFrame(frame);
         return;

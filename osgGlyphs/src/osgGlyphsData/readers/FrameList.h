@@ -31,9 +31,12 @@ public:
     /** True when the dataset has PointReadOptions::maxFrames frames: the reader stops. */
     bool isFull() const { return _options.maxFrames > 0 && _dataset.getNumFrames() >= _options.maxFrames; }
 
-    /** A frame the reader has read to its end, whose first line was firstLine. In a growing file
-     * a frame whose last line has no end yet is incomplete: it is left out, with a warning. */
-    void add(PointData* frame, uint64_t firstLine);
+    /** A frame the reader has read to its end, whose first line was firstLine and which holds
+     * filePoints points in the file (of which frame holds its share). In a growing file a frame
+     * whose last line has no end yet is incomplete: it is left out, with a warning. A frame
+     * without points in the file is left out; an empty share of a frame is kept, so that every
+     * share has the same frames. */
+    void add(PointData* frame, uint64_t firstLine, uint64_t filePoints);
 
     /** True when error is the stream ending inside the frame being read, and that frame may be
      * left out: frames were read before it, or the reading may be empty (a growing file, or a

@@ -98,7 +98,8 @@ std::vector<std::string> legacyColumns(std::size_t fieldCount)
     return {};
 }
 
-osg::ref_ptr<PointData> readAtoms(TextScanner& scanner, std::string_view names, const FrameHeader& header)
+osg::ref_ptr<PointData> readAtoms(TextScanner& scanner, std::string_view names, const FrameHeader& header,
+                                  const PointShare& share)
 {
     const uint64_t itemLine = scanner.getLineNumber();
     if (!header.hasCount)
@@ -119,7 +120,8 @@ osg::ref_ptr<PointData> readAtoms(TextScanner& scanner, std::string_view names, 
                                "ITEM: ATOMS names no columns, and the rows have neither 5 nor 8 fields");
     }
 
-    ColumnTable table(scanner);
+    ColumnTable table(scanner, share);
+    table.setRowCount(header.count);
     for (const std::string& name : columns)
         table.addColumn(name, name == "element" ? ColumnTable::Species : ColumnTable::Number);
     const uint64_t minBytes = 2 * std::max<uint64_t>(columns.size(), 1);
@@ -138,7 +140,7 @@ namespace
 {
 
 // Reads the items of a dump, a frame at each ITEM: ATOMS.
-void readItems(TextScanner& scanner, FrameList& frames)
+void readItems(TextScanner& scanner, FrameList& frames, const PointShare& share)
 {
     FrameHeader header;
     std::string_view line;
@@ -175,12 +177,12 @@ void readItems(TextScanner& scanner, FrameList& frames)
         }
         else if (item == "ATOMS" || startsWith(item, "ATOMS "))
         {
-            osg::ref_ptr<PointData> frame = readAtoms(scanner, item.substr(5), header);
+            osg::ref_ptr<PointData> frame = readAtoms(scanner, item.substr(5), header, share);
             frame->setTimestep(header.hasTimestep ? header.timestep
                                                   : static_cast<int64_t>(frames.getFileFrame()));
             if (header.hasBox)
                 frame->setBox(header.box, header.tilt);
-            frames.add(frame.get(), header.firstLine);
+            frames.add(frame.get(), header.firstLine, header.count);
             header = FrameHeader();
         }
         else
@@ -200,7 +202,7 @@ void osgGlyphsData::readers::readLammps(TextScanner& scanner, PointDataset& data
     FrameList frames(scanner, dataset, options);
     try
     {
-        readItems(scanner, frames);
+        readItems(scanner, frames, options.share);
     }
     catch (const ReadError& error)
     {

@@ -375,7 +375,8 @@ void osgGlyphsData::readers::readPly(TextScanner& scanner, PointDataset& dataset
         scanner.failAtLine(vertex->line, "element 'vertex' has no properties");
     checkSizes(scanner, header);
 
-    ColumnTable table(scanner);
+    ColumnTable table(scanner, options.share);
+    table.setRowCount(vertex->count);
     for (Property& property : vertex->properties)
     {
         if (!property.isList)

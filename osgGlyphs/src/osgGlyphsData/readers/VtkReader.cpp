@@ -138,7 +138,7 @@ public:
     /** Arrays of more components per tuple are refused (a header of garbage, usually). */
     static constexpr uint64_t MaxComponents = 1024;
 
-    VtkReader(TextScanner& scanner) : _scanner(scanner), _table(scanner) {}
+    VtkReader(TextScanner& scanner, const PointShare& share) : _scanner(scanner), _table(scanner, share) {}
 
     osg::ref_ptr<PointData> read()
     {
@@ -454,6 +454,7 @@ private:
             if (_hasPoints)
                 _scanner.fail("a second POINTS section");
             _numPoints = count(1);
+            _table.setRowCount(_numPoints);
             _hasPoints = true;
             readValues("POINTS", _numPoints, 3, type(2), {"x", "y", "z"});
         }
@@ -560,6 +561,6 @@ private:
 void osgGlyphsData::readers::readVtk(TextScanner& scanner, PointDataset& dataset,
                                      const PointReadOptions& options)
 {
-    VtkReader reader(scanner);
+    VtkReader reader(scanner, options.share);
     addOnlyFrame(scanner, dataset, options, reader.read().get());
 }

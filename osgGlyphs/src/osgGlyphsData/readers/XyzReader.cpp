@@ -136,7 +136,8 @@ bool parseLattice(TextScanner& scanner, const std::string& lattice, osg::Boundin
     return true;
 }
 
-osg::ref_ptr<PointData> readFrame(TextScanner& scanner, uint64_t count, uint64_t frameIndex)
+osg::ref_ptr<PointData> readFrame(TextScanner& scanner, uint64_t count, uint64_t frameIndex,
+                                  const PointShare& share)
 {
     const std::vector<KeyValue> pairs =
         parseComment(scanner.requireLine("the comment line after the atom count"));
@@ -145,7 +146,8 @@ osg::ref_ptr<PointData> readFrame(TextScanner& scanner, uint64_t count, uint64_t
     const KeyValue* lattice = findKey(pairs, "lattice");
     const bool hasBox = lattice && parseLattice(scanner, lattice->value, box, tilt);
 
-    ColumnTable table(scanner);
+    ColumnTable table(scanner, share);
+    table.setRowCount(count);
     std::string_view first;
     bool hasFirst = false;
     const KeyValue* properties = findKey(pairs, "properties");
@@ -213,7 +215,7 @@ void osgGlyphsData::readers::readXyz(TextScanner& scanner, PointDataset& dataset
                              "expected the number of atoms of frame " + std::to_string(frame + 1) +
                              ", found " + quote(text));
             const uint64_t countLine = scanner.getLineNumber();
-            frames.add(readFrame(scanner, count, frame).get(), countLine);
+            frames.add(readFrame(scanner, count, frame, options.share).get(), countLine, count);
         }
     }
     catch (const ReadError& error)

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Sort-last rendering over MPI against one process: the colour (PNG) and eye-space depth (PFM)
+# that `mpirun -np K osgglyphviewer ... --offscreen` writes must equal, byte for byte, what one
+# plain process writes, for K = 1..4. Usage:
+#   composite.sh VIEWER WORKDIR CASE
+# CASE: random-sphere, random-cone (--random, split across ranks), dump-sphere, dump-cone (a
+# generated LAMMPS dump, each rank reading its share; colour by a column, default radius),
+# empty-share (fewer atoms than ranks), bad-share (a malformed atom in the last rank's share:
+# every rank ends with that one error).
+set -euo pipefail
+viewer=$1 work=$2 case=$3
+mkdir -p "$work" && cd "$work"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+mpi() { local k=$1; shift; mpirun --oversubscribe -np "$k" "$viewer" "$@"; }
+
+# A LAMMPS dump of n atoms at pseudo-random places (a fixed linear congruential sequence), with
+# velocities and a column c; the atom at line bad_line (if any) gets a malformed x.
+dump() {
+    awk -v n="$1" -v bad="${2:-0}" 'BEGIN {
+        s = 12345; m = 2147483648
+        printf "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS pp pp pp\n0 20\n0 20\n0 20\n", n
+        printf "ITEM: ATOMS id type x y z vx vy vz c\n"
+        for (i = 1; i <= n; i++) {
+            for (k = 0; k < 7; k++) { s = (1103515245 * s + 12345) % m; v[k] = s / m }
+            x = (i == bad) ? "1.5.5" : sprintf("%.4f", 20 * v[0])
+            printf "%d %d %s %.4f %.4f %.4f %.4f %.4f %.4f\n", i, 1 + (i % 3), x, 20 * v[1], 20 * v[2], \
+                v[3] - 0.5, v[4] - 0.5, v[5] - 0.5, 100 * v[6]
+        }
+    }' > "$3"
+}
+
+compare() {
+    local name=$1; shift
+    "$viewer" "$@" --offscreen --output single.png --depth-output single.pfm > single.log
+    for k in 1 2 3 4; do
+        mpi "$k" "$@" --offscreen --output "np$k.png" --depth-output "np$k.pfm" > "np$k.log"
+        cmp single.png "np$k.png" || { echo "$name: colour differs with $k processes"; exit 1; }
+        cmp single.pfm "np$k.pfm" || { echo "$name: depth differs with $k processes"; exit 1; }
+    done
+    echo "$name: colour and depth of 1 to 4 processes equal the single process's"
+}
+
+case $case in
+random-sphere) compare "$case" --random 3000 --glyph sphere ;;
+random-cone) compare "$case" --random 3000 --glyph cone ;;
+dump-sphere) dump 2500 0 atoms.lammpstrj; compare "$case" atoms.lammpstrj --glyph sphere --color-by c ;;
+dump-cone) dump 2500 0 atoms.lammpstrj; compare "$case" atoms.lammpstrj --glyph cone --color-by speed ;;
+empty-share)
+    dump 2 0 two.lammpstrj
+    "$viewer" two.lammpstrj --offscreen --output single.png > single.log
+    mpi 3 two.lammpstrj --offscreen --output np3.png > np3.log
+    cmp single.png np3.png && echo "empty-share: a rank without atoms changes nothing" ;;
+bad-share)
+    dump 40 35 bad.lammpstrj # line 44: in the last of 2 ranks' shares
+    if mpi 2 bad.lammpstrj --offscreen --output bad.png > bad.log 2> bad.err; then
+        echo "bad-share: succeeded"; exit 1
+    fi
+    cat bad.err
+    [ "$(grep -c 'osgglyphviewer: bad.lammpstrj:44: ' bad.err)" = 1 ] || { echo "bad-share: not one error line"; exit 1; }
+    [ ! -e bad.png ] || { echo "bad-share: wrote an image"; exit 1; }
+    echo "bad-share: every rank ended with the one error of the rank that could not read its share" ;;
+*) echo "composite.sh: unknown case $case"; exit 2 ;;
+esac

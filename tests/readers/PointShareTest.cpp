@@ -1,0 +1,203 @@
+/* Reading and generating one share of a dataset (osgGlyphsData::PointShare): the shares of every
+ * format together are the whole dataset, once, in order; bad shares are refused. No MPI here. */
+
+#include "ReaderTestUtil.h"
+
+#include <osgGlyphsData/PointShare>
+#include <osgGlyphsData/RandomCloud>
+
+using namespace osgGlyphsData;
+using namespace readertest;
+
+namespace
+{
+
+/** The dataset's share of text in a format; fails the test on an error. */
+osg::ref_ptr<PointDataset> readShare(const std::string& text, const std::string& format, PointShare share)
+{
+    PointReadOptions options;
+    options.share = share;
+    std::vector<std::string> warnings;
+    std::string error;
+    osg::ref_ptr<PointDataset> dataset = readWithOptions(text, format, options, warnings, error);
+    EXPECT_TRUE(dataset.valid()) << error;
+    return dataset;
+}
+
+/** Column name of every frame, share after share, for count shares: equal to the whole reading. */
+void expectSharesMakeWhole(const std::string& text, const std::string& format, const std::string& name,
+                           unsigned int count)
+{
+    std::string error;
+    osg::ref_ptr<PointDataset> whole = readString(text, format, error);
+    ASSERT_TRUE(whole.valid()) << error;
+    std::vector<std::vector<float>> joined(whole->getNumFrames());
+    for (unsigned int index = 0; index < count; ++index)
+    {
+        osg::ref_ptr<PointDataset> share = readShare(text, format, PointShare{index, count});
+        ASSERT_TRUE(share.valid());
+        ASSERT_EQ(share->getNumFrames(), whole->getNumFrames())
+            << format << " share " << index << " of " << count;
+        for (std::size_t frame = 0; frame < joined.size(); ++frame)
+        {
+            const std::vector<float> part = column(*share->getFrame(frame), name);
+            const PointRange range =
+                getShareRange(PointShare{index, count}, whole->getFrame(frame)->getNumPoints());
+            EXPECT_EQ(part.size(), range.end - range.begin)
+                << format << " share " << index << " of " << count;
+            joined[frame].insert(joined[frame].end(), part.begin(), part.end());
+        }
+    }
+    for (std::size_t frame = 0; frame < joined.size(); ++frame)
+        EXPECT_EQ(joined[frame], column(*whole->getFrame(frame), name))
+            << format << " in " << count << " shares";
+}
+
+const std::string DUMP =
+    "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n7\nITEM: BOX BOUNDS pp pp pp\n0 10\n0 10\n0 10\n"
+    "ITEM: ATOMS id type x y z\n"
+    "1 1 0.5 1 1\n2 1 1.5 1 1\n3 2 2.5 1 1\n4 2 3.5 1 1\n5 1 4.5 1 1\n6 1 5.5 1 1\n7 2 6.5 1 1\n"
+    "ITEM: TIMESTEP\n10\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp pp\n0 10\n0 10\n0 10\n"
+    "ITEM: ATOMS id type x y z\n1 1 7.5 2 2\n2 2 8.5 2 2\n";
+
+}
+
+TEST(PointShare, RangesCoverEveryPointOnceInOrder)
+{
+    for (unsigned int count = 1; count <= 7; ++count)
+    {
+        for (uint64_t total : {uint64_t(0), uint64_t(1), uint64_t(5), uint64_t(13), uint64_t(1) << 62})
+        {
+            uint64_t next = 0;
+            for (unsigned int index = 0; index < count; ++index)
+            {
+                const PointRange range = getShareRange(PointShare{index, count}, total);
+                EXPECT_EQ(range.begin, next);
+                EXPECT_LE(range.begin, range.end);
+                EXPECT_LE(range.end - range.begin, total / count + 1);
+                next = range.end;
+            }
+            EXPECT_EQ(next, total) << total << " points in " << count << " shares";
+        }
+    }
+}
+
+TEST(PointShare, RefusesSharesThatAreNone)
+{
+    std::string error;
+    EXPECT_TRUE(checkPointShare(PointShare{2, 3}, error));
+    EXPECT_FALSE(checkPointShare(PointShare{0, 0}, error));
+    EXPECT_EQ(error, "share 0 of 0: a dataset splits into at least 1 share");
+    EXPECT_FALSE(checkPointShare(PointShare{3, 3}, error));
+    EXPECT_EQ(error, "share 3 of 3: shares are counted from 0 to 2");
+
+    PointReadOptions options;
+    options.share = PointShare{5, 2};
+    std::vector<std::string> warnings;
+    EXPECT_FALSE(readWithOptions(DUMP, "lammps", options, warnings, error, "dump.test").valid());
+    EXPECT_EQ(error, "dump.test: share 5 of 2: shares are counted from 0 to 1");
+
+    RandomCloudOptions random;
+    random.share = PointShare{1, 0};
+    EXPECT_FALSE(createRandomCloud(random, error).valid());
+    EXPECT_EQ(error, "random cloud: share 1 of 0: a dataset splits into at least 1 share");
+}
+
+TEST(PointShare, LammpsSharesAreRangesOfEachFrameAndKeepEveryFrame)
+{
+    for (unsigned int count = 1; count <= 4; ++count)
+        expectSharesMakeWhole(DUMP, "lammps", "x", count);
+    // Share 2 of 3 of the second frame's 2 atoms is empty: the frame stays, with its timestep.
+    osg::ref_ptr<PointDataset> share = readShare(DUMP, "lammps", PointShare{0, 3});
+    ASSERT_EQ(share->getNumFrames(), 2u);
+    EXPECT_EQ(share->getFrame(1)->getNumPoints(), 0u);
+    EXPECT_EQ(share->getFrame(1)->getTimestep(), 10);
+    EXPECT_TRUE(share->getFrame(1)->hasBox());
+}
+
+TEST(PointShare, AMalformedRowFailsTheShareThatHoldsIt)
+{
+    std::string dump = DUMP;
+    dump.replace(dump.find("6 1 5.5 1 1"), 11, "6 1 oops 1 1"); // line 15, the 6th atom: share 1 of 2
+    PointReadOptions options;
+    std::vector<std::string> warnings;
+    std::string error;
+    options.share = PointShare{0, 2};
+    EXPECT_TRUE(readWithOptions(dump, "lammps", options, warnings, error, "dump.bad").valid()) << error;
+    options.share = PointShare{1, 2};
+    EXPECT_FALSE(readWithOptions(dump, "lammps", options, warnings, error, "dump.bad").valid());
+    EXPECT_TRUE(hasError(error, "dump.bad:15:", "oops")) << error;
+}
+
+TEST(PointShare, XyzAndVtkSharesAreRangesOfThePoints)
+{
+    const std::string xyz = "5\nframe\nH 0 0 0\nO 1 0 0\nH 2 0 0\nC 3 0 0\nN 4 0 0\n"
+                            "3\nframe\nH 5 0 0\nO 6 0 0\nH 7 0 0\n";
+    const std::string vtk =
+        "# vtk DataFile Version 3.0\nshare\nASCII\nDATASET POLYDATA\nPOINTS 5 float\n"
+        "0 0 0 1 0 0 2 0 0 3 0 0 4 0 0\nPOINT_DATA 5\nSCALARS t float 1\nLOOKUP_TABLE default\n"
+        "10 11 12 13 14\n";
+    for (unsigned int count = 1; count <= 4; ++count)
+    {
+        expectSharesMakeWhole(xyz, "xyz", "x", count);
+        expectSharesMakeWhole(xyz, "xyz", "element", count);
+        expectSharesMakeWhole(vtk, "vtk", "x", count);
+        expectSharesMakeWhole(vtk, "vtk", "t", count);
+    }
+}
+
+TEST(PointShare, PlySharesAreRangesOfTheVertexElement)
+{
+    const std::string header = "element vertex 5\nproperty float x\nproperty uchar red\nelement face 1\n"
+                               "property list uchar int vertex_indices\nend_header\n";
+    std::string ascii = "ply\nformat ascii 1.0\n" + header + "0 10\n1 11\n2 12\n3 13\n4 14\n3 0 1 2\n";
+    Bytes binary(false);
+    binary.text("ply\nformat binary_little_endian 1.0\n" + header);
+    for (int i = 0; i < 5; ++i)
+        binary.put(float(i)).put(uint8_t(10 + i));
+    binary.put(uint8_t(3)).put(int32_t(0)).put(int32_t(1)).put(int32_t(2));
+    for (unsigned int count = 1; count <= 4; ++count)
+    {
+        expectSharesMakeWhole(ascii, "ply", "x", count);
+        expectSharesMakeWhole(ascii, "ply", "red", count);
+        expectSharesMakeWhole(binary.str(), "ply", "x", count);
+        expectSharesMakeWhole(binary.str(), "ply", "red", count);
+    }
+}
+
+TEST(PointShare, CsvSharesTakeEveryCountthRow)
+{
+    const std::string csv = "x,y,z\n0,0,0\n1,0,0\n2,0,0\n3,0,0\n4,0,0\n";
+    osg::ref_ptr<PointDataset> share = readShare(csv, "csv", PointShare{1, 2});
+    EXPECT_EQ(column(*share->getFrame(0), "x"), (std::vector<float>{1.0f, 3.0f}));
+    share = readShare(csv, "csv", PointShare{0, 2});
+    EXPECT_EQ(column(*share->getFrame(0), "x"), (std::vector<float>{0.0f, 2.0f, 4.0f}));
+}
+
+TEST(PointShare, RandomSharesAreTheGlyphsOfTheWholeCloud)
+{
+    RandomCloudOptions options;
+    options.count = 1001;
+    options.shape = osgGlyphs::GlyphShape::Cone;
+    osg::ref_ptr<osgGlyphs::GlyphCloud> whole = createRandomCloud(options);
+    for (unsigned int count = 1; count <= 4; ++count)
+    {
+        std::vector<osg::Vec3f> positions, vectors;
+        std::vector<float> scalars;
+        for (unsigned int index = 0; index < count; ++index)
+        {
+            options.share = PointShare{index, count};
+            std::string error;
+            osg::ref_ptr<osgGlyphs::GlyphCloud> share = createRandomCloud(options, error);
+            ASSERT_TRUE(share.valid()) << error;
+            EXPECT_EQ(share->getRadius(), whole->getRadius());
+            EXPECT_EQ(share->getLengthScale(), whole->getLengthScale());
+            positions.insert(positions.end(), share->getPositions()->begin(), share->getPositions()->end());
+            vectors.insert(vectors.end(), share->getVectors()->begin(), share->getVectors()->end());
+            scalars.insert(scalars.end(), share->getScalars()->begin(), share->getScalars()->end());
+        }
+        EXPECT_TRUE(positions == whole->getPositions()->asVector()) << count << " shares";
+        EXPECT_TRUE(vectors == whole->getVectors()->asVector()) << count << " shares";
+        EXPECT_TRUE(scalars == whole->getScalars()->asVector()) << count << " shares";
+    }
+}
