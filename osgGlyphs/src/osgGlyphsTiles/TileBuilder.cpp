@@ -80,6 +80,7 @@ TileBuilder::TileBuilder(const GlyphCloud& style, const TileOptions& options)
         _style->setColors(new osg::Vec4ubArray);
     _style->setVectors(_style->getShape() == osgGlyphs::GlyphShape::Sphere ? nullptr : new osg::Vec3Array);
     _style->setSelection({});
+    _style->setOcclusion(nullptr);
 }
 
 TileBuilder::~TileBuilder() = default;
