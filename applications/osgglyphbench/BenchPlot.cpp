@@ -2,6 +2,8 @@
 
 #include "BenchReport.h"
 
+#include <osgGlyphs/GlyphCloud>
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -46,8 +48,9 @@ std::string quoteShell(const std::string& text)
     return quoted + "'";
 }
 
-/** The same colour for a technique in every panel; the floor is a dashed black reference. */
-std::string getLineStyle(std::string technique)
+/** The same colour for a technique in every panel; the floor is a dashed black reference. A
+ * culling other than the default is dotted. */
+std::string getLineStyle(std::string technique, osgGlyphs::GlyphCulling culling)
 {
     if (technique == "points-floor")
         return "lc rgb '#000000' dt 2 lw 2 pt 7 ps 0.8";
@@ -55,34 +58,50 @@ std::string getLineStyle(std::string technique)
                                          "#9467bd", "#8c564b", "#e377c2", "#17becf"};
     const std::vector<std::string> all = osgGlyphs::getTechniqueNames();
     const size_t index = std::find(all.begin(), all.end(), technique) - all.begin();
-    return std::string("lc rgb '") + colors[index % 8] + "' lw 2 pt 7 ps 0.8";
+    static const osgGlyphs::GlyphCulling defaultCulling =
+        osg::ref_ptr<osgGlyphs::GlyphCloud>(new osgGlyphs::GlyphCloud)->getCulling();
+    const bool byDefault = culling == defaultCulling;
+    return std::string("lc rgb '") + colors[index % 8] + "' lw 2 pt " + (byDefault ? "7" : "6") + " ps 0.8" +
+           (byDefault ? "" : " dt 3");
 }
 
-/** One data file per (shape, technique): n, fps at the median, at the slowest and the fastest
- * frame. Returns the plot command of the shape's panel, or an empty string without data. */
+/** One data file per (shape, technique, culling measured): n, fps at the median, at the slowest
+ * and the fastest frame. Returns the plot command of the shape's panel, or an empty string
+ * without data. A line is named by its culling too when more than one culling was measured. */
 std::string writePanelData(const std::filesystem::path& folder, const std::vector<BenchResult>& results,
                            const BenchSettings& settings, osgGlyphs::GlyphShape shape)
 {
     std::string plot;
     for (const std::string& technique : settings.techniques)
     {
-        const std::string name = std::string(osgGlyphs::getShapeName(shape)) + "-" + technique + ".dat";
-        std::ofstream data(folder / name);
-        bool any = false;
-        for (unsigned int n : settings.counts)
+        for (osgGlyphs::GlyphCulling culling : settings.cullings)
         {
-            if (const BenchResult* result = findResult(results, technique, shape, n))
+            const std::string title = settings.cullings.size() > 1
+                                          ? technique + ", culling " + osgGlyphs::getCullingName(culling)
+                                          : technique;
+            const std::string name = std::string(osgGlyphs::getShapeName(shape)) + "-" + technique + "-" +
+                                     osgGlyphs::getCullingName(culling) + ".dat";
+            std::ofstream data(folder / name);
+            bool any = false;
+            for (unsigned int n : settings.counts)
             {
-                data << n << ' ' << 1000.0 / result->msMedian << ' ' << 1000.0 / result->msMax << ' '
-                     << 1000.0 / result->msMin << '\n';
-                any = true;
+                for (const BenchResult* result : findResults(results, technique, shape, n))
+                {
+                    // Techniques that cannot cull are measured once, with culling off.
+                    const bool once = findResults(results, technique, shape, n).size() == 1;
+                    if (result->culling != culling && !(once && culling == settings.cullings.front()))
+                        continue;
+                    data << n << ' ' << 1000.0 / result->msMedian << ' ' << 1000.0 / result->msMax << ' '
+                         << 1000.0 / result->msMin << '\n';
+                    any = true;
+                }
             }
+            if (!any)
+                continue;
+            plot += std::string(plot.empty() ? "plot " : ", \\\n     ") +
+                    quoteGnuplot((folder / name).string()) + " using 1:2:3:4 with yerrorlines " +
+                    getLineStyle(technique, culling) + " title " + quoteGnuplot(title);
         }
-        if (!any)
-            continue;
-        plot += std::string(plot.empty() ? "plot " : ", \\\n     ") + quoteGnuplot((folder / name).string()) +
-                " using 1:2:3:4 with yerrorlines " + getLineStyle(technique) + " title " +
-                quoteGnuplot(technique);
     }
     return plot;
 }
