@@ -16,6 +16,7 @@
 #include <osg/Geode>
 #include <osg/NodeVisitor>
 #include <osgGlyphs/GlyphStateCache>
+#include <osgGlyphsData/SharedDataset>
 #include <thread>
 
 ViewerScene::ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphsData::ColorKey& key)
@@ -232,6 +233,12 @@ osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, const
         loadDataset(options.file, options.format, options.follow, sharing.share, error);
     if (!agree(sharing, dataset.valid(), error))
         return nullptr;
+    // The same in every process: no need to agree on it.
+    if (sharing.reduction.valid() && !osgGlyphsData::unifyShares(*dataset, *sharing.reduction, error))
+    {
+        error = options.file + ": " + error;
+        return nullptr;
+    }
     std::shared_ptr<DatasetFollower> follower;
     if (options.follow)
     {

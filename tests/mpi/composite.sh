@@ -5,6 +5,7 @@
 #   composite.sh VIEWER WORKDIR CASE
 # CASE: random-sphere, random-cone (--random, split across ranks), dump-sphere, dump-cone (a
 # generated LAMMPS dump, each rank reading its share; colour by a column, default radius),
+# dump-species (labels met in another order by later ranks), dump-far (coordinates 1e6 from zero),
 # empty-share (fewer atoms than ranks), bad-share (a malformed atom in the last rank's share:
 # every rank ends with that one error).
 set -euo pipefail
@@ -14,17 +15,22 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_
 mpi() { local k=$1; shift; mpirun --oversubscribe -np "$k" "$viewer" "$@"; }
 
 # A LAMMPS dump of n atoms at pseudo-random places (a fixed linear congruential sequence), with
-# velocities and a column c; the atom at line bad_line (if any) gets a malformed x.
+# velocities and a column c; the atom at line bad_line (if any) gets a malformed x. Optional:
+# offset (added to x, y and z, and to the box) and species (1: an element column whose later
+# atoms meet the elements in another order than the first ones).
 dump() {
-    awk -v n="$1" -v bad="${2:-0}" 'BEGIN {
+    awk -v n="$1" -v bad="${2:-0}" -v offset="${4:-0}" -v species="${5:-0}" 'BEGIN {
         s = 12345; m = 2147483648
-        printf "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS pp pp pp\n0 20\n0 20\n0 20\n", n
-        printf "ITEM: ATOMS id type x y z vx vy vz c\n"
+        printf "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n%d\nITEM: BOX BOUNDS pp pp pp\n", n
+        for (k = 0; k < 3; k++) printf "%d %d\n", offset, offset + 20
+        printf "ITEM: ATOMS id type%s x y z vx vy vz c\n", species ? " element" : ""
+        split("Ni Al Cu", later, " ")
         for (i = 1; i <= n; i++) {
             for (k = 0; k < 7; k++) { s = (1103515245 * s + 12345) % m; v[k] = s / m }
-            x = (i == bad) ? "1.5.5" : sprintf("%.4f", 20 * v[0])
-            printf "%d %d %s %.4f %.4f %.4f %.4f %.4f %.4f\n", i, 1 + (i % 3), x, 20 * v[1], 20 * v[2], \
-                v[3] - 0.5, v[4] - 0.5, v[5] - 0.5, 100 * v[6]
+            x = (i == bad) ? "1.5.5" : sprintf("%.4f", offset + 20 * v[0])
+            element = species ? " " (3 * i <= n ? "Cu" : later[1 + i % 3]) : ""
+            printf "%d %d%s %s %.4f %.4f %.4f %.4f %.4f %.4f\n", i, 1 + (i % 3), element, x, \
+                offset + 20 * v[1], offset + 20 * v[2], v[3] - 0.5, v[4] - 0.5, v[5] - 0.5, 100 * v[6]
         }
     }' > "$3"
 }
@@ -45,6 +51,8 @@ random-sphere) compare "$case" --random 3000 --glyph sphere ;;
 random-cone) compare "$case" --random 3000 --glyph cone ;;
 dump-sphere) dump 2500 0 atoms.lammpstrj; compare "$case" atoms.lammpstrj --glyph sphere --color-by c ;;
 dump-cone) dump 2500 0 atoms.lammpstrj; compare "$case" atoms.lammpstrj --glyph cone --color-by speed ;;
+dump-species) dump 2500 0 atoms.lammpstrj 0 1; compare "$case" atoms.lammpstrj --color-by species ;;
+dump-far) dump 2500 0 atoms.lammpstrj 1000000; compare "$case" atoms.lammpstrj --glyph cone --color-by c ;;
 empty-share)
     dump 2 0 two.lammpstrj
     "$viewer" two.lammpstrj --offscreen --output single.png > single.log

@@ -17,6 +17,25 @@ void reduce(std::vector<double>& values, MPI_Op operation)
                   MPI_COMM_WORLD);
 }
 
+/** The concatenation of every process's values, in rank order (the sizes may differ). */
+template <typename T>
+std::vector<T> gatherAll(const std::vector<T>& values, MPI_Datatype type, int size)
+{
+    int count = static_cast<int>(values.size());
+    std::vector<int> counts(size), offsets(size);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    int total = 0;
+    for (int rank = 0; rank < size; ++rank)
+    {
+        offsets[rank] = total;
+        total += counts[rank];
+    }
+    std::vector<T> all(static_cast<std::size_t>(total));
+    MPI_Allgatherv(values.data(), count, type, all.data(), counts.data(), offsets.data(), type,
+                   MPI_COMM_WORLD);
+    return all;
+}
+
 }
 
 bool osgGlyphsComposite::isLaunchedByMPI()
@@ -82,19 +101,27 @@ void MPIShare::sum(std::vector<double>& values) const
 
 void MPIShare::gather(std::vector<double>& values) const
 {
-    int count = static_cast<int>(values.size());
-    std::vector<int> counts(_size), offsets(_size);
-    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
-    int total = 0;
-    for (int rank = 0; rank < _size; ++rank)
+    values = gatherAll(values, MPI_DOUBLE, _size);
+}
+
+void MPIShare::gather(std::vector<std::string>& strings) const
+{
+    std::vector<int> lengths;
+    std::vector<char> characters;
+    for (const std::string& text : strings)
     {
-        offsets[rank] = total;
-        total += counts[rank];
+        lengths.push_back(static_cast<int>(text.size()));
+        characters.insert(characters.end(), text.begin(), text.end());
     }
-    std::vector<double> all(static_cast<std::size_t>(total));
-    MPI_Allgatherv(values.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
-                   MPI_COMM_WORLD);
-    values.swap(all);
+    lengths = gatherAll(lengths, MPI_INT, _size);
+    characters = gatherAll(characters, MPI_CHAR, _size);
+    strings.clear();
+    std::size_t start = 0;
+    for (int length : lengths)
+    {
+        strings.emplace_back(characters.data() + start, static_cast<std::size_t>(length));
+        start += static_cast<std::size_t>(length);
+    }
 }
 
 bool MPIShare::agree(bool ok, std::string& error) const

@@ -39,6 +39,12 @@ const std::vector<float>* PointData::getColumn(const std::string& name) const
     return index < 0 ? nullptr : &_columns[index];
 }
 
+std::vector<float>* PointData::getColumn(const std::string& name)
+{
+    const int index = findColumn(name);
+    return index < 0 ? nullptr : &_columns[index];
+}
+
 const std::vector<float>* PointData::getColumn(std::size_t index) const
 {
     return index < _columns.size() ? &_columns[index] : nullptr;

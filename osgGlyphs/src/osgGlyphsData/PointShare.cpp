@@ -35,6 +35,8 @@ void ShareReduction::sum(std::vector<double>&) const {}
 
 void ShareReduction::gather(std::vector<double>&) const {}
 
+void ShareReduction::gather(std::vector<std::string>&) const {}
+
 PointShare ShareReduction::getShare() const
 {
     return PointShare();

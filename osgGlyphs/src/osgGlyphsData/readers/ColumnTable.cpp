@@ -15,9 +15,6 @@ using namespace osgGlyphsData::readers;
 namespace
 {
 
-// Category indices are stored as floats: beyond 2^24 they would no longer be exact.
-const std::size_t maxLabels = std::size_t(1) << 24;
-
 bool withinFloatRange(double value)
 {
     return std::abs(value) <= std::numeric_limits<float>::max(); // false for NaN
@@ -115,6 +112,12 @@ void ColumnTable::appendRow(std::string_view line)
     const std::size_t count = _columns.size();
     if (count > 0 && !keeps(_columns[0].seen))
     {
+        if (_columns[0].seen == 0)
+        {
+            std::vector<std::string_view> fields;
+            splitBlanks(line, fields);
+            chooseOrigins(fields);
+        }
         for (Column& column : _columns)
             ++column.seen;
         return;
@@ -170,18 +173,21 @@ void ColumnTable::readRows(uint64_t done, uint64_t count, const std::string& sec
 void ColumnTable::appendField(std::size_t index, std::string_view field)
 {
     Column& column = _columns[index];
-    if (!keeps(column.seen++))
+    const uint64_t row = column.seen++;
+    double value = 0.0;
+    if (!keeps(row))
+    {
+        if (row == 0 && column.kind == Number)
+            chooseOrigin(column, field);
         return;
+    }
     switch (column.kind)
     {
     case Number:
-    {
-        double value = 0.0;
         if (!parseDouble(field, value) || !withinFloatRange(value))
             _scanner.fail(describeBadNumber(field, column.name));
         appendNumber(column, value);
         break;
-    }
     case Logical:
     {
         const std::string lower = toLower(field);
@@ -203,10 +209,34 @@ void ColumnTable::appendField(std::size_t index, std::string_view field)
     }
 }
 
+void ColumnTable::chooseOrigin(Column& column, double value)
+{
+    column.originChosen = true;
+    if (withinFloatRange(value) && std::abs(value) >= FarFromZero)
+        column.origin = std::round(value);
+}
+
+void ColumnTable::chooseOrigin(Column& column, std::string_view field)
+{
+    double value = 0.0;
+    column.originChosen = true;
+    if (parseDouble(field, value))
+        chooseOrigin(column, value);
+}
+
+void ColumnTable::chooseOrigins(const std::vector<std::string_view>& fields)
+{
+    for (std::size_t c = 0; c < _columns.size() && c < fields.size(); ++c)
+    {
+        if (_columns[c].kind == Number)
+            chooseOrigin(_columns[c], fields[c]);
+    }
+}
+
 void ColumnTable::appendNumber(Column& column, double value)
 {
-    if (column.values.empty() && std::abs(value) >= FarFromZero)
-        column.origin = std::round(value);
+    if (!column.originChosen)
+        chooseOrigin(column, value);
     const double offset = value - column.origin;
     if (column.origin != 0.0 && (std::abs(offset) > std::abs(value) || !withinFloatRange(offset)))
     {
@@ -227,8 +257,8 @@ void ColumnTable::appendLabel(Column& column, std::string_view field)
         column.values.push_back(found->second);
         return;
     }
-    if (column.labels.size() >= maxLabels)
-        _scanner.fail("column '" + column.name + "': more than " + std::to_string(maxLabels) +
+    if (column.labels.size() >= MaxLabels)
+        _scanner.fail("column '" + column.name + "': more than " + std::to_string(MaxLabels) +
                       " distinct labels");
     const float index = static_cast<float>(column.labels.size());
     column.labels.emplace_back(field);
@@ -239,8 +269,13 @@ void ColumnTable::appendLabel(Column& column, std::string_view field)
 void ColumnTable::appendValue(std::size_t index, double value, uint64_t offset)
 {
     Column& column = _columns[index];
-    if (!keeps(column.seen++))
+    const uint64_t row = column.seen++;
+    if (!keeps(row))
+    {
+        if (row == 0)
+            chooseOrigin(column, value);
         return;
+    }
     if (!withinFloatRange(value))
     {
         std::ostringstream text;

@@ -29,10 +29,11 @@ std::vector<std::string> componentNames(const std::string& name, std::size_t cou
  * Every bad value throws through the scanner, naming the column, at the scanner's current line
  * (text) or at the given byte offset (binary).
  *
- * Numbers are read in double precision. A numeric column whose first value is FarFromZero or
- * more from zero gets that value, rounded to an integer, as its origin, and keeps the offsets
- * from it (PointData::getColumnOrigin()): coordinates 1e7 from zero keep their decimals. A
- * value farther from the origin than from zero takes the column back to plain values. */
+ * Numbers are read in double precision. A numeric column whose first value (row 0 of the file,
+ * in every share) is FarFromZero or more from zero gets that value, rounded to an integer, as its
+ * origin, and keeps the offsets from it (PointData::getColumnOrigin()): coordinates 1e7 from zero
+ * keep their decimals. A value farther from the origin than from zero takes the column back to
+ * plain values. */
 class ColumnTable
 {
 public:
@@ -47,6 +48,10 @@ public:
 
     /** More columns than this are refused (a header of garbage, usually). */
     static constexpr std::size_t MaxColumns = 4096;
+
+    /** More distinct labels in a column are refused: category indices are stored as floats,
+     * beyond 2^24 they would no longer be exact. */
+    static constexpr std::size_t MaxLabels = std::size_t(1) << 24;
 
     /** Where float values lose a thousandth of a unit (2^16: floats step by 1/128 there). */
     static constexpr double FarFromZero = 65536.0;
@@ -84,6 +89,10 @@ public:
     /** Appends one text field to a column. */
     void appendField(std::size_t column, std::string_view field);
 
+    /** Chooses the origins of the numeric columns from the fields of row 0 of the file, for a
+     * share that does not read that row as its own (a share that starts past it). */
+    void chooseOrigins(const std::vector<std::string_view>& fields);
+
     /** Appends one binary value read at offset. */
     void appendValue(std::size_t column, double value, uint64_t offset);
 
@@ -104,6 +113,7 @@ private:
         std::vector<float> values;
         uint64_t seen = 0; // rows of the file, in the share and out of it
         double origin = 0.0;
+        bool originChosen = false;
         std::vector<std::string> labels;
         std::map<std::string, float, std::less<>> indices;
     };
@@ -116,6 +126,11 @@ private:
     void appendLabel(Column& column, std::string_view field);
     /** Appends a finite number within the range of a float. */
     static void appendNumber(Column& column, double value);
+    /** The origin of a column from its value in row 0 of the file, in every share alike. */
+    static void chooseOrigin(Column& column, double value);
+    /** The same from a field of row 0 that the share does not hold: a bad field leaves the column
+     * without an origin (the share that holds it reports it). */
+    static void chooseOrigin(Column& column, std::string_view field);
 
     TextScanner& _scanner;
     std::vector<Column> _columns;
