@@ -6,6 +6,7 @@
 # CASE: random-sphere, random-cone (--random, split across ranks), dump-sphere, dump-cone (a
 # generated LAMMPS dump, each rank reading its share; colour by a column, default radius),
 # dump-species (labels met in another order by later ranks), dump-far (coordinates 1e6 from zero),
+# csv-sphere (a generated CSV split by its bytes; default radius from every 3rd point),
 # empty-share (fewer atoms than ranks), bad-share (a malformed atom in the last rank's share:
 # every rank ends with that one error).
 set -euo pipefail
@@ -35,6 +36,23 @@ dump() {
     }' > "$3"
 }
 
+# A CSV of n points on a grid of unit spacing, 20 x 20 wide, each moved by up to 0.05 at random
+# (a fixed linear congruential sequence), with a column c, a comment every 700 rows: the
+# default radius (0.4 of the median neighbour distance) keeps spheres apart, so that no two
+# glyphs meet at equal depths, where compositing and one process may choose differently.
+csv() {
+    awk -v n="$1" 'BEGIN {
+        s = 12345; m = 2147483648
+        print "x,y,z,c"
+        for (i = 0; i < n; i++) {
+            for (k = 0; k < 4; k++) { s = (1103515245 * s + 12345) % m; v[k] = s / m }
+            printf "%.4f,%.4f,%.4f,%.4f\n", i % 20 + 0.1 * (v[0] - 0.5), int(i / 20) % 20 + 0.1 * (v[1] - 0.5), \
+                int(i / 400) + 0.1 * (v[2] - 0.5), 100 * v[3]
+            if (i % 700 == 699) print "# a comment"
+        }
+    }' > "$2"
+}
+
 compare() {
     local name=$1; shift
     "$viewer" "$@" --offscreen --output single.png --depth-output single.pfm > single.log
@@ -52,6 +70,7 @@ random-cone) compare "$case" --random 3000 --glyph cone ;;
 dump-sphere) dump 2500 0 atoms.lammpstrj; compare "$case" atoms.lammpstrj --glyph sphere --color-by c ;;
 dump-cone) dump 2500 0 atoms.lammpstrj; compare "$case" atoms.lammpstrj --glyph cone --color-by speed ;;
 dump-species) dump 2500 0 atoms.lammpstrj 0 1; compare "$case" atoms.lammpstrj --color-by species ;;
+csv-sphere) csv 6000 points.csv; compare "$case" points.csv --color-by c ;;
 dump-far) dump 2500 0 atoms.lammpstrj 1000000; compare "$case" atoms.lammpstrj --glyph cone --color-by c ;;
 empty-share)
     dump 2 0 two.lammpstrj

@@ -123,34 +123,6 @@ TEST(PointReader, ReportsProgressUpToTheWholeFile)
     EXPECT_EQ(calls.back().second, text.size());
 }
 
-namespace
-{
-
-// A stream that cannot seek, as a pipe: its size is unknown to the reader.
-class PipeBuffer : public std::streambuf
-{
-public:
-    explicit PipeBuffer(const std::string& data) : _data(data), _at(0) {}
-
-protected:
-    int_type underflow() override
-    {
-        if (_at >= _data.size())
-            return traits_type::eof();
-        const std::size_t piece = std::min<std::size_t>(_data.size() - _at, 7);
-        char* begin = &_data[_at];
-        setg(begin, begin, begin + piece);
-        _at += piece;
-        return traits_type::to_int_type(*begin);
-    }
-
-private:
-    std::string _data;
-    std::size_t _at;
-};
-
-} // namespace
-
 TEST(PointReader, ReadsStreamsOfUnknownSize)
 {
     PipeBuffer pipe("ITEM: TIMESTEP\n7\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp pp\n0 1\n0 1\n0 1\n"

@@ -165,13 +165,109 @@ TEST(PointShare, PlySharesAreRangesOfTheVertexElement)
     }
 }
 
-TEST(PointShare, CsvSharesTakeEveryCountthRow)
+TEST(PointShare, CsvSharesAreTheLinesThatStartInTheirPartOfTheBytes)
 {
+    // The 30 body bytes split at 15: share 1 of 2 holds the lines starting at body bytes 18 and 24.
     const std::string csv = "x,y,z\n0,0,0\n1,0,0\n2,0,0\n3,0,0\n4,0,0\n";
-    osg::ref_ptr<PointDataset> share = readShare(csv, "csv", PointShare{1, 2});
+    EXPECT_EQ(column(*readShare(csv, "csv", PointShare{0, 2})->getFrame(0), "x"),
+              (std::vector<float>{0.0f, 1.0f, 2.0f}));
+    EXPECT_EQ(column(*readShare(csv, "csv", PointShare{1, 2})->getFrame(0), "x"),
+              (std::vector<float>{3.0f, 4.0f}));
+
+    // Lines of unequal lengths among comments, blank lines and CRLF ends: every row once, in order.
+    std::string uneven = "# made by a test\nx;y;z\r\n";
+    for (int i = 0; i < 60; ++i)
+    {
+        uneven += std::to_string(i) + "." + std::string(1 + i * 7 % 13, '5') + ";" + std::to_string(i % 4) +
+                  ";0\r\n";
+        if (i % 9 == 4)
+            uneven += "# note\n\n";
+    }
+    std::string error;
+    osg::ref_ptr<PointDataset> whole = readString(uneven, "csv", error);
+    ASSERT_TRUE(whole.valid()) << error;
+    for (unsigned int count = 1; count <= 7; ++count)
+    {
+        std::vector<float> joined;
+        for (unsigned int index = 0; index < count; ++index)
+        {
+            const std::vector<float> part =
+                column(*readShare(uneven, "csv", PointShare{index, count})->getFrame(0), "x");
+            joined.insert(joined.end(), part.begin(), part.end());
+        }
+        EXPECT_EQ(joined, column(*whole->getFrame(0), "x")) << count << " shares";
+    }
+}
+
+TEST(PointShare, CsvSharesOfAPipeTakeEveryCountthRow)
+{
+    // A stream of unknown size cannot be split by its bytes.
+    const std::string csv = "x,y,z\n0,0,0\n1,0,0\n2,0,0\n3,0,0\n4,0,0\n";
+    PipeBuffer pipe(csv);
+    std::istream stream(&pipe);
+    PointReadOptions options;
+    options.share = PointShare{1, 2};
+    std::string error;
+    osg::ref_ptr<PointDataset> share = readPointStream(stream, "csv", "pipe", options, error);
+    ASSERT_TRUE(share.valid()) << error;
     EXPECT_EQ(column(*share->getFrame(0), "x"), (std::vector<float>{1.0f, 3.0f}));
-    share = readShare(csv, "csv", PointShare{0, 2});
-    EXPECT_EQ(column(*share->getFrame(0), "x"), (std::vector<float>{0.0f, 2.0f, 4.0f}));
+}
+
+TEST(PointShare, ACsvShareNamesTheFilesLineNumbers)
+{
+    // 3.5 MB: share 2 of 3 seeks past the first two thirds (beyond the first block it read), without
+    // counting their lines; its error still names the file's line 390004.
+    std::string csv = "# comment\nx,y,z\n";
+    for (int i = 0; i < 400000; ++i)
+        csv += (i == 390000 ? std::string("oops") : std::to_string(i)) + ",0,0\n" + (i == 40 ? "\n" : "");
+    std::vector<std::string> warnings;
+    std::string error;
+    PointReadOptions options;
+    options.share = PointShare{2, 3};
+    EXPECT_FALSE(readWithOptions(csv, "csv", options, warnings, error, "rows.csv").valid());
+    EXPECT_TRUE(hasError(error, "rows.csv:390004:", "oops")) << error;
+    options.share = PointShare{1, 3};
+    EXPECT_TRUE(readWithOptions(csv, "csv", options, warnings, error, "rows.csv").valid()) << error;
+}
+
+namespace
+{
+
+/** Bytes share index of count read of text (through the progress callback). */
+uint64_t bytesReadByShare(const std::string& text, const std::string& format, PointShare share)
+{
+    PointReadOptions options;
+    options.share = share;
+    uint64_t bytes = 0;
+    options.progress = [&bytes](uint64_t read, uint64_t) { bytes = read; };
+    std::vector<std::string> warnings;
+    std::string error;
+    EXPECT_TRUE(readWithOptions(text, format, options, warnings, error).valid()) << error;
+    return bytes;
+}
+
+}
+
+TEST(PointShare, CsvAndBinaryPlySharesSeekToTheirPart)
+{
+    // 8 MB: a share reads its quarter and at most a block (1 MiB) either side of it.
+    std::string csv = "x,y,z\n";
+    Bytes ply(false);
+    const int rows = 400000;
+    ply.text("ply\nformat binary_little_endian 1.0\nelement vertex " + std::to_string(rows / 2) +
+             "\nproperty double x\nproperty double y\nproperty double z\nend_header\n");
+    for (int i = 0; i < rows; ++i)
+    {
+        csv += std::to_string(1000000 + i) + ",0.25,0.125\n";
+        if (i < rows / 2)
+            ply.put(double(i)).put(0.25).put(0.125);
+    }
+    for (const auto& [text, format] : {std::make_pair(csv, "csv"), std::make_pair(ply.str(), "ply")})
+    {
+        const uint64_t share = bytesReadByShare(text, format, PointShare{3, 4});
+        EXPECT_LT(share, text.size() / 4 + 2 * (uint64_t(1) << 20))
+            << format << " of " << text.size() << " bytes";
+    }
 }
 
 TEST(PointShare, RandomSharesAreTheGlyphsOfTheWholeCloud)

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -85,6 +86,29 @@ inline std::vector<float> column(const osgGlyphsData::PointData& data, const std
         values[i] = static_cast<float>(data.getValue(static_cast<std::size_t>(index), i));
     return values;
 }
+
+/** A stream that cannot seek, as a pipe: its size is unknown to the reader. */
+class PipeBuffer : public std::streambuf
+{
+public:
+    explicit PipeBuffer(const std::string& data) : _data(data), _at(0) {}
+
+protected:
+    int_type underflow() override
+    {
+        if (_at >= _data.size())
+            return traits_type::eof();
+        const std::size_t piece = std::min<std::size_t>(_data.size() - _at, 7);
+        char* begin = &_data[_at];
+        setg(begin, begin, begin + piece);
+        _at += piece;
+        return traits_type::to_int_type(*begin);
+    }
+
+private:
+    std::string _data;
+    std::size_t _at;
+};
 
 /** Binary data in either byte order. */
 class Bytes

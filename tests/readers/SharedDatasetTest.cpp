@@ -106,16 +106,18 @@ TEST(SharedDataset, WithoutAgreeingSharesNumberTheirOwnLabels)
 TEST(SharedDataset, FarCoordinatesHaveTheOriginOfTheWholeFile)
 {
     // The first x is 1e6 + 0.1: every share stores offsets from 1000000, as the whole reading does.
-    std::string xyz = "9\nfar\n";
+    std::string xyz = "9\nfar\n", csv = "x y z\n";
     for (int i = 0; i < 9; ++i)
     {
         const std::string row =
             std::to_string(1000000.1 + 123.457 * i) + " " + std::to_string(-2e6 - 7.31 * i) + " 0.5\n";
         xyz += "C " + row;
+        csv += row;
     }
     for (const char* name : {"x", "y"})
     {
         expectSharesAgreeWithWhole(xyz, "xyz", name);
+        expectSharesAgreeWithWhole(csv, "csv", name);
     }
 }
 

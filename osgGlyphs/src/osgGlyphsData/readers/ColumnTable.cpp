@@ -154,6 +154,23 @@ void ColumnTable::appendRow(std::string_view line)
         failFieldCount(countFields(line));
 }
 
+uint64_t ColumnTable::getNextKeptRow(uint64_t row, uint64_t end) const
+{
+    uint64_t next = row;
+    if (_hasRowCount)
+        next = row < _range.begin ? _range.begin : row < _range.end ? row : end;
+    else if (row % _share.count != _share.index)
+        next =
+            row - row % _share.count + _share.index + (row % _share.count > _share.index ? _share.count : 0);
+    return std::min(next, end);
+}
+
+void ColumnTable::skipRows(uint64_t count)
+{
+    for (Column& column : _columns)
+        column.seen += count;
+}
+
 void ColumnTable::readRows(uint64_t done, uint64_t count, const std::string& section,
                            std::string_view stopMarker)
 {

@@ -96,6 +96,15 @@ public:
     /** Appends one binary value read at offset. */
     void appendValue(std::size_t column, double value, uint64_t offset);
 
+    /** Whether the table keeps row (of the file, from 0): it is in the share. */
+    bool keepsRow(uint64_t row) const { return keeps(row); }
+
+    /** The first row from row on (at most end) that the table keeps. */
+    uint64_t getNextKeptRow(uint64_t row, uint64_t end) const;
+
+    /** Counts count rows of other shares as read, without their values. */
+    void skipRows(uint64_t count);
+
     /** For tables without columns: counts rows. */
     void addEmptyRows(uint64_t count) { _rows += static_cast<std::size_t>(count); }
 

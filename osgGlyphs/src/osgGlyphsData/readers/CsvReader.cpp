@@ -5,6 +5,7 @@
 #include "Readers.h"
 
 #include <cstring>
+#include <limits>
 
 using namespace osgGlyphsData;
 using namespace osgGlyphsData::readers;
@@ -86,7 +87,10 @@ void osgGlyphsData::readers::readCsv(TextScanner& scanner, PointDataset& dataset
     }
     if (allNumbers)
         scanner.fail("the first line must name the columns, found " + quote(trim(line)));
-    ColumnTable table(scanner, options.share);
+    // A share of a file of known size holds the lines that start in its part of the body's bytes
+    // (getShareRange() of the bytes after the header): it seeks there and stops at the next part.
+    const bool byBytes = !options.share.isWhole() && scanner.getEndOffset() > 0;
+    ColumnTable table(scanner, byBytes ? PointShare() : options.share);
     for (std::string_view field : fields)
     {
         for (char c : field)
@@ -98,8 +102,31 @@ void osgGlyphsData::readers::readCsv(TextScanner& scanner, PointDataset& dataset
         table.addColumn(std::string(field));
     }
 
-    while (scanner.nextLine(line))
+    uint64_t stop = std::numeric_limits<uint64_t>::max();
+    bool pending = false; // line holds a row still to append
+    if (byBytes)
     {
+        const uint64_t body = scanner.getOffset();
+        const PointRange part = getShareRange(options.share, scanner.getEndOffset() - body);
+        stop = body + part.end;
+        if (part.begin > 0)
+        {
+            // Row 0, before the share, gives the columns their origins as in every share.
+            while ((pending = scanner.nextLine(line)) && isSkipped(line))
+            {
+            }
+            if (pending && scanner.getLineOffset() < body + part.begin)
+            {
+                splitSeparated(line, separator, fields);
+                table.chooseOrigins(fields);
+                pending = false;
+                scanner.skipToLineStart(body + part.begin);
+            }
+        }
+    }
+    while ((pending || scanner.nextLine(line)) && scanner.getLineOffset() < stop)
+    {
+        pending = false;
         if (isSkipped(line))
             continue;
         if (separator == 0)

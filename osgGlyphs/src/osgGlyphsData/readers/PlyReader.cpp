@@ -225,8 +225,10 @@ public:
         {
             if (element.hasLists)
                 readItem(element, item);
-            else
+            else if (item == 0 || _table.keepsRow(item))
                 readRecord(element, item);
+            else
+                item = skipRecords(element, item) - 1;
         }
     }
 
@@ -253,6 +255,18 @@ private:
             at += scalarSize(property.type);
         }
         _scanner.consume(element.fixedSize);
+    }
+
+    // Fixed-size vertex records from item up to the next the share holds (or the end), unread;
+    // returns that next item. Record 0 is read in every share: it gives the columns their origins.
+    uint64_t skipRecords(const Element& element, uint64_t item)
+    {
+        const uint64_t next = _table.getNextKeptRow(item, element.count);
+        const uint64_t start = _scanner.getOffset();
+        if (!_scanner.skipBytes((next - item) * element.fixedSize))
+            failEnd(element, item + (_scanner.getOffset() - start) / element.fixedSize);
+        _table.skipRows(next - item);
+        return next;
     }
 
     // An item with lists, property by property.

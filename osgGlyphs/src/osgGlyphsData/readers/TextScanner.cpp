@@ -14,7 +14,8 @@ TextScanner::TextScanner(std::istream& in, const std::string& name, uint64_t tot
       _blockSize(totalBytes > 0 ? static_cast<std::size_t>(std::min<uint64_t>(totalBytes + 1, BlockSize))
                                 : UnknownSizeBlockSize),
       _begin(0), _end(0), _startOffset(startOffset), _bufferOffset(startOffset), _bytesRead(0),
-      _lineNumber(startLine), _lineOffset(startOffset), _lineTerminated(true), _eof(false)
+      _lineNumber(startLine), _lineOffset(startOffset), _lineTerminated(true), _eof(false),
+      _streamStart(static_cast<int64_t>(in.tellg()))
 {
 }
 
@@ -138,6 +139,10 @@ bool TextScanner::readBytes(void* destination, std::size_t n)
 
 bool TextScanner::skipBytes(uint64_t n)
 {
+    // Past the buffer, in a stream that can seek and says how far it goes: a seek.
+    if (n > _end - _begin && _streamStart >= 0 && _totalBytes > 0 && n <= getRemainingBytes() &&
+        seekStream(getOffset() + n))
+        return true;
     while (n > 0)
     {
         if (_begin == _end && !fill(1))
@@ -154,8 +159,65 @@ bool TextScanner::atEnd()
     return _begin == _end && !fill(1);
 }
 
+void TextScanner::skipToLineStart(uint64_t offset)
+{
+    const uint64_t from = getOffset();
+    if (offset <= from)
+        return;
+    std::string_view line;
+    if (offset - 1 < _bufferOffset + _end || _streamStart < 0 || _jump.to > _jump.from ||
+        !seekStream(offset - 1))
+    {
+        while (getOffset() < offset && nextLine(line))
+        {
+        }
+        return;
+    }
+    // The rest of the line that holds offset - 1 (nothing when that byte ends a line).
+    const uint64_t linesBefore = _lineNumber;
+    nextLine(line);
+    _lineNumber = linesBefore;
+    _jump = Jump{from, getOffset(), linesBefore};
+}
+
+bool TextScanner::seekStream(uint64_t offset)
+{
+    _in.clear();
+    if (!_in.seekg(static_cast<std::streamoff>(_streamStart + (offset - _startOffset))))
+    {
+        _in.clear();
+        return false;
+    }
+    _begin = _end = 0;
+    _bufferOffset = offset;
+    _eof = false;
+    return true;
+}
+
+uint64_t TextScanner::getFileLine(uint64_t line) const
+{
+    if (_jump.to == _jump.from || line <= _jump.linesBefore)
+        return line;
+    // Counted only now: a failure ends the reading, so the stream may move.
+    _in.clear();
+    _in.seekg(static_cast<std::streamoff>(_streamStart + (_jump.from - _startOffset)));
+    std::vector<char> block(BlockSize);
+    uint64_t left = _jump.to - _jump.from;
+    while (left > 0 && _in)
+    {
+        _in.read(block.data(), static_cast<std::streamsize>(std::min<uint64_t>(left, block.size())));
+        const std::size_t count = static_cast<std::size_t>(_in.gcount());
+        if (count == 0)
+            break;
+        line += static_cast<uint64_t>(std::count(block.data(), block.data() + count, '\n'));
+        left -= count;
+    }
+    return line;
+}
+
 void TextScanner::failAtLine(uint64_t line, const std::string& what) const
 {
+    line = getFileLine(line);
     throw ReadError{_name + ":" + std::to_string(line == 0 ? 1 : line) + ": " + what};
 }
 
@@ -166,8 +228,8 @@ void TextScanner::fail(const std::string& what) const
 
 void TextScanner::failEndOfFile(const std::string& what) const
 {
-    throw ReadError{_name + ":" + std::to_string(_lineNumber == 0 ? 1 : _lineNumber) +
-                        ": unexpected end of file" + what,
+    const uint64_t line = getFileLine(_lineNumber);
+    throw ReadError{_name + ":" + std::to_string(line == 0 ? 1 : line) + ": unexpected end of file" + what,
                     true};
 }
 

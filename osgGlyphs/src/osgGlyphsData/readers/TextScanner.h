@@ -53,7 +53,8 @@ public:
     /** The next line, failing "unexpected end of file, expected <what>" at the end. */
     std::string_view requireLine(const std::string& what);
 
-    /** 1-based number of the line nextLine() returned last; 0 (or startLine) before the first. */
+    /** 1-based number of the line nextLine() returned last; 0 (or startLine) before the first.
+     * After skipToLineStart() sought past lines, without them (failures name the file's lines). */
     uint64_t getLineNumber() const { return _lineNumber; }
 
     /** False when the line nextLine() returned last ended with the stream, without "\n". */
@@ -90,11 +91,21 @@ public:
     /** Copies n bytes; false, with what could be read consumed, when the stream ends first. */
     bool readBytes(void* destination, std::size_t n);
 
-    /** Skips n bytes; false when the stream ends first. */
+    /** Skips n bytes (seeking past the buffer when the stream can); false when the stream ends
+     * first. */
     bool skipBytes(uint64_t n);
 
     /** True when no byte is left. */
     bool atEnd();
+
+    /** Continues at the first line that starts at or after offset (a byte offset of the file,
+     * past getOffset()), or at the end. A seekable stream seeks there, and the lines it jumps
+     * over are counted only when a failure names a line after them (by reading them then);
+     * another stream reads the lines on the way. Line numbers stay the file's either way. */
+    void skipToLineStart(uint64_t offset);
+
+    /** The offset of the file's end: where the stream started plus its size; 0 when unknown. */
+    uint64_t getEndOffset() const { return _totalBytes > 0 ? _startOffset + _totalBytes : 0; }
 
     /** Throws "<name>:<line>: <what>". */
     [[noreturn]] void failAtLine(uint64_t line, const std::string& what) const;
@@ -110,6 +121,10 @@ public:
 
 private:
     bool fill(std::size_t wanted);
+    /** Moves the stream to a file offset past the buffer; false when it cannot seek. */
+    bool seekStream(uint64_t offset);
+    /** The file's number of a line numbered without the lines skipToLineStart() jumped over. */
+    uint64_t getFileLine(uint64_t line) const;
 
     std::istream& _in;
     std::string _name;
@@ -126,6 +141,15 @@ private:
     uint64_t _lineOffset;
     bool _lineTerminated;
     bool _eof;
+    /** The stream's position at _startOffset; -1 when it cannot tell (a pipe: no seeking). */
+    int64_t _streamStart;
+    /** The bytes [from, to) that skipToLineStart() jumped over, after linesBefore lines. */
+    struct Jump
+    {
+        uint64_t from = 0;
+        uint64_t to = 0;
+        uint64_t linesBefore = 0;
+    } _jump;
 };
 
 } // namespace readers
