@@ -1,13 +1,17 @@
 #version 330 compatibility
-// osgGlyphs, the full-screen pass of osgGlyphs::ScreenEffects: puts the colour and depth its
-// children were drawn into back into the view, with screen-space ambient occlusion and outlines,
-// both computed from the depth alone, and writes the children's depth as the view's projection
-// has it, so that what is drawn outside the node depth-tests against them.
+// osgGlyphs, the full-screen passes of osgGlyphs::ScreenEffects. The composite puts the colour
+// and depth its children were drawn into back into the view, with screen-space ambient occlusion
+// and outlines, both computed from the depth alone, and writes the children's depth as the view's
+// projection has it, so that what is drawn outside the node depth-tests against them. Under
+// OSGGLYPHS_SCREEN_OCCLUSION_PASS, the pass before it writes each pixel's occlusion, which the
+// composite blurs.
 
-#pragma import_defines(OSGGLYPHS_SCREEN_AMBIENT_OCCLUSION, OSGGLYPHS_SCREEN_OUTLINES)
+#pragma import_defines(OSGGLYPHS_SCREEN_AMBIENT_OCCLUSION, OSGGLYPHS_SCREEN_OUTLINES, OSGGLYPHS_SCREEN_OCCLUSION_PASS)
 
 uniform sampler2D osgGlyphs_effectsColor;
 uniform sampler2D osgGlyphs_effectsDepth;
+/** The occlusion pass's output: the light each pixel receives. */
+uniform sampler2D osgGlyphs_effectsOcclusion;
 /** The view's viewport (x, y, width, height): the textures cover it pixel for pixel. */
 uniform vec4 osgGlyphs_effectsViewport;
 /** The projection the children were drawn with, and its inverse. */
@@ -68,10 +72,12 @@ vec3 surfaceNormal(ivec2 pixel, vec3 p)
     return n.z < 0.0 ? -n : n;
 }
 
-/** A value in [0, 1) per pixel that varies fast and evenly over the screen and not in time. */
-float screenNoise(vec2 pixel)
+/** A value in [0, 1) per pixel, fixed on the screen (it does not flicker): 16 evenly spread
+ * values over each 4x4 pixels (a Bayer matrix), which the composite's blur averages. */
+float screenNoise(ivec2 pixel)
 {
-    return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
+    const int BAYER[16] = int[16](0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5);
+    return (float(BAYER[(pixel.y & 3) * 4 + (pixel.x & 3)]) + 0.5) / 16.0;
 }
 
 /** The fraction of the cosine-weighted hemisphere around the normal at p that is open: samples
@@ -83,7 +89,7 @@ float ambientLight(ivec2 pixel, vec3 p)
     vec3 helper = abs(n.z) < 0.999 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
     vec3 t = normalize(cross(helper, n));
     vec3 b = cross(n, t);
-    float noise = screenNoise(vec2(pixel));
+    float noise = screenNoise(pixel);
     float turn = 6.2831853 * noise;
     float radius = osgGlyphs_occlusionRadius;
     float bias = 0.02 * radius + 2.0 * pixelSize(p.z);
@@ -111,6 +117,28 @@ float ambientLight(ivec2 pixel, vec3 p)
     return 1.0 - occluded / float(samples);
 }
 
+/** The light of the occlusion pass averaged over the 4x4 pixels of the sample pattern around
+ * the pixel, over those whose surface lies within a tenth of the radius of the pixel's (across a
+ * silhouette the light of another surface does not bleed). */
+float blurredAmbientLight(ivec2 pixel, float z)
+{
+    float tolerance = max(0.1 * osgGlyphs_occlusionRadius, 2.0 * pixelSize(z));
+    float sum = 0.0, count = 0.0;
+    for (int y = -2; y < 2; ++y)
+    {
+        for (int x = -2; x < 2; ++x)
+        {
+            ivec2 neighbour = clamp(pixel + ivec2(x, y), ivec2(0), viewSize - 1);
+            float depth = depthAt(neighbour);
+            if (depth >= 1.0 || abs(viewZ(neighbour, depth) - z) > tolerance)
+                continue;
+            sum += texelFetch(osgGlyphs_effectsOcclusion, neighbour, 0).r;
+            count += 1.0;
+        }
+    }
+    return count > 0.0 ? sum / count : 1.0;
+}
+
 #endif
 
 #ifdef OSGGLYPHS_SCREEN_OUTLINES
@@ -122,7 +150,7 @@ float ambientLight(ivec2 pixel, vec3 p)
  * unless the chord lies so far in front that it passes over an occluder's silhouette. */
 float outline(ivec2 pixel, float depth, vec3 p)
 {
-    const float CREASE = 0.3, RIDGE = 1.5, JUMP = 8.0;
+    const float CREASE = 0.3, RIDGE = 1.5, JUMP = 4.0;
     float width = osgGlyphs_outlineWidth;
     float footprint = width * pixelSize(p.z);
     const vec2 AXES[4] = vec2[4](vec2(1.0, 0.0), vec2(0.0, 1.0), vec2(0.7071068, 0.7071068),
@@ -141,6 +169,18 @@ float outline(ivec2 pixel, float depth, vec3 p)
 
 #endif
 
+#ifdef OSGGLYPHS_SCREEN_OCCLUSION_PASS
+
+void main()
+{
+    viewSize = ivec2(osgGlyphs_effectsViewport.zw);
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    float depth = depthAt(pixel);
+    color = vec4(depth >= 1.0 ? 1.0 : ambientLight(pixel, viewPosition(vec2(pixel) + 0.5, depth)));
+}
+
+#else
+
 void main()
 {
     viewSize = ivec2(osgGlyphs_effectsViewport.zw);
@@ -151,7 +191,7 @@ void main()
     vec3 p = viewPosition(vec2(pixel) + 0.5, depth);
     color = texelFetch(osgGlyphs_effectsColor, pixel, 0);
 #ifdef OSGGLYPHS_SCREEN_AMBIENT_OCCLUSION
-    color.rgb *= mix(1.0, ambientLight(pixel, p), osgGlyphs_occlusionStrength);
+    color.rgb *= mix(1.0, blurredAmbientLight(pixel, p.z), osgGlyphs_occlusionStrength);
 #endif
 #ifdef OSGGLYPHS_SCREEN_OUTLINES
     color.rgb = mix(color.rgb, osgGlyphs_outlineColor.rgb, osgGlyphs_outlineColor.a * outline(pixel, depth, p));
@@ -159,3 +199,5 @@ void main()
     vec4 clip = gl_ProjectionMatrix * vec4(p, 1.0);
     gl_FragDepth = 0.5 * (gl_DepthRange.diff * clip.z / clip.w + gl_DepthRange.near + gl_DepthRange.far);
 }
+
+#endif

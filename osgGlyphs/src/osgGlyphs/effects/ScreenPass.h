@@ -27,8 +27,10 @@ struct ScreenEffectsSettings
 };
 
 /** A group's children drawn, in one view, into a colour and a depth texture of the viewport's
- * size by a pre-render camera, and a full-screen triangle that composites them back into the
- * view with the effects. The pass's objects change in the cull traversal: they are DYNAMIC, so
+ * size by a pre-render camera; with ambient occlusion, a second one that draws each pixel's
+ * occlusion into a third texture; and a full-screen triangle that composites them back into the
+ * view with the effects (the occlusion blurred over the 4x4 pixels its sample pattern repeats
+ * over). The pass's objects change in the cull traversal: they are DYNAMIC, so
  * that the next frame is not culled while this one is drawn. */
 class ScreenPass : public osg::Referenced
 {
@@ -55,10 +57,13 @@ protected:
                          const ScreenEffectsSettings& settings);
 
     osg::ref_ptr<osg::Camera> _camera;
+    osg::ref_ptr<osg::Camera> _occlusionCamera;
     osg::ref_ptr<osg::Texture2D> _color;
     osg::ref_ptr<osg::Texture2D> _depth;
+    osg::ref_ptr<osg::Texture2D> _occlusion;
     osg::ref_ptr<osg::Geometry> _triangle;
     osg::ref_ptr<osg::StateSet> _composite;
+    osg::ref_ptr<osg::StateSet> _occlusionPass;
 };
 
 }
