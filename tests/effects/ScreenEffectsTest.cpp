@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace osgGlyphsTest;
@@ -248,20 +249,35 @@ bool isRed(const osg::Vec4ub& c)
 
 }
 
-class DepthPassThrough : public ::testing::TestWithParam<bool>
+/** Whether the view computes its near and far planes, and whether the sphere inside the node is
+ * a glyph or ordinary OSG geometry. */
+class DepthPassThrough : public ::testing::TestWithParam<std::tuple<bool, bool>>
 {
 };
 
-TEST_P(DepthPassThrough, BoxOutsideIntersectsGlyphInside)
+TEST_P(DepthPassThrough, BoxOutsideIntersectsSphereInside)
 {
-    const bool computeNearFar = GetParam();
-    // A red box outside the node cuts through the sphere inside it.
+    const bool computeNearFar = std::get<0>(GetParam()), geometry = std::get<1>(GetParam());
+    const std::string name =
+        std::string(computeNearFar ? "computed" : "fixed") + (geometry ? "_geometry" : "_glyph");
+    // A red box outside the node cuts through the sphere inside it; its front lies behind the
+    // sphere's, so that computed near and far planes hold the sphere only if the node says so.
+    const osg::Vec3 centre(0.0f, -0.5f, 0.0f);
     osg::ref_ptr<osg::ShapeDrawable> box =
         new osg::ShapeDrawable(new osg::Box(osg::Vec3(0.8f, -0.3f, 0.2f), 1.2f));
     box->setColor(osg::Vec4(0.9f, 0.1f, 0.1f, 1.0f));
     osg::ref_ptr<osg::Geode> boxGeode = new osg::Geode;
     boxGeode->addDrawable(box.get());
-    osg::ref_ptr<ScreenEffects> effects = effectsAround(sphereCloud({osg::Vec3()}, 1.0f).get());
+    osg::ref_ptr<osg::Node> sphere = sphereCloud({centre}, 1.0f);
+    if (geometry)
+    {
+        osg::ref_ptr<osg::ShapeDrawable> drawable = new osg::ShapeDrawable(new osg::Sphere(centre, 1.0f));
+        drawable->setColor(GREEN);
+        osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+        geode->addDrawable(drawable.get());
+        sphere = geode;
+    }
+    osg::ref_ptr<ScreenEffects> effects = effectsAround(sphere.get());
     osg::ref_ptr<osg::Group> scene = new osg::Group;
     scene->addChild(effects.get());
     scene->addChild(boxGeode.get());
@@ -273,7 +289,7 @@ TEST_P(DepthPassThrough, BoxOutsideIntersectsGlyphInside)
     const Frame plain = renderer.render(scene.get());
     effects->setAmbientOcclusion(true);
     const Frame composited = renderer.render(scene.get());
-    saveFrame(composited, std::string("screen_effects_depth_") + (computeNearFar ? "computed" : "fixed"));
+    saveFrame(composited, "screen_effects_depth_" + name);
 
     int red = 0, mismatched = 0, depthMismatched = 0;
     for (int y = 0; y < SIZE; ++y)
@@ -293,9 +309,13 @@ TEST_P(DepthPassThrough, BoxOutsideIntersectsGlyphInside)
     EXPECT_EQ(depthMismatched, 0) << "pixels whose depth moves";
 }
 
-INSTANTIATE_TEST_SUITE_P(NearFar, DepthPassThrough, ::testing::Values(false, true),
-                         [](const ::testing::TestParamInfo<bool>& param)
-                         { return param.param ? std::string("Computed") : std::string("Fixed"); });
+INSTANTIATE_TEST_SUITE_P(NearFarAndSphere, DepthPassThrough,
+                         ::testing::Combine(::testing::Bool(), ::testing::Bool()),
+                         [](const ::testing::TestParamInfo<std::tuple<bool, bool>>& param)
+                         {
+                             return std::string(std::get<0>(param.param) ? "Computed" : "Fixed") +
+                                    (std::get<1>(param.param) ? "Geometry" : "Glyph");
+                         });
 
 TEST(ScreenEffects, EffectsOffDrawsAsAGroup)
 {
