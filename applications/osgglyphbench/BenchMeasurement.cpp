@@ -4,6 +4,7 @@
 
 #include <osgGlyphs/GlyphCloud>
 #include <osgGlyphs/GlyphStateCache>
+#include <osgGlyphs/ScreenEffects>
 #include <osgGlyphsData/RandomCloud>
 #include <osgGlyphsHeadless/OffscreenViewer>
 
@@ -44,6 +45,13 @@ osg::ref_ptr<osgGlyphs::GlyphCloud> createCloud(const BenchCase& c, float radius
     }
     bytesPerGlyph = cloud->getGPUBytesPerGlyph();
     return cloud;
+}
+
+void applyScreenEffects(ScreenEffectsChoice choice, osgGlyphs::ScreenEffects& effects)
+{
+    effects.setAmbientOcclusion(choice == ScreenEffectsChoice::AmbientOcclusion ||
+                                choice == ScreenEffectsChoice::Both);
+    effects.setOutlines(choice == ScreenEffectsChoice::Outlines || choice == ScreenEffectsChoice::Both);
 }
 
 /** Looks at the unit cube's centre from a distance that fits its bounding sphere into the
@@ -190,10 +198,14 @@ bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings
 {
     result = BenchResult{c.technique, c.shape, c.n, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, radius, c.culling};
     result.ambientOcclusion = c.ambientOcclusion;
-    osg::ref_ptr<osg::Geode> scene = new osg::Geode;
+    result.screenEffects = c.screenEffects;
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud =
         createCloud(c, radius, settings, result.bytesPerGlyph, result.occlusionSeconds);
-    scene->addDrawable(cloud.get());
+    geode->addDrawable(cloud.get());
+    osg::ref_ptr<osg::Group> scene = new osgGlyphs::ScreenEffects;
+    scene->addChild(geode.get());
+    applyScreenEffects(c.screenEffects, static_cast<osgGlyphs::ScreenEffects&>(*scene));
     std::vector<double> frameMs;
     osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer;
     if (!measure(settings, scene.get(), result.firstFrameMs, frameMs, viewer, error))

@@ -105,6 +105,20 @@ bool parseOnOff(const std::string& text, bool& on)
     return on || text == "off";
 }
 
+bool parseScreenEffects(const std::string& text, ScreenEffectsChoice& choice)
+{
+    for (ScreenEffectsChoice candidate : {ScreenEffectsChoice::Off, ScreenEffectsChoice::AmbientOcclusion,
+                                          ScreenEffectsChoice::Outlines, ScreenEffectsChoice::Both})
+    {
+        if (text == getScreenEffectsName(candidate))
+        {
+            choice = candidate;
+            return true;
+        }
+    }
+    return false;
+}
+
 bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
 {
     std::string text;
@@ -125,6 +139,10 @@ bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
         return false;
     if (arguments.read("--ao", text) &&
         !parseList(arguments, "--ao", text, "off, on", parseOnOff, settings.ambientOcclusion))
+        return false;
+    if (arguments.read("--screen-effects", text) &&
+        !parseList(arguments, "--screen-effects", text, "off, ao, outline, both", parseScreenEffects,
+                   settings.screenEffects))
         return false;
     if (arguments.read("--data-path", text) && !parseDataPath(text, settings.dataPath))
     {
@@ -166,6 +184,21 @@ void readValues(osg::ArgumentParser& arguments, BenchSettings& settings)
         arguments.reportError("--frames: at least one frame");
 }
 
+}
+
+const char* getScreenEffectsName(ScreenEffectsChoice choice)
+{
+    switch (choice)
+    {
+    case ScreenEffectsChoice::AmbientOcclusion:
+        return "ao";
+    case ScreenEffectsChoice::Outlines:
+        return "outline";
+    case ScreenEffectsChoice::Both:
+        return "both";
+    default:
+        return "off";
+    }
 }
 
 const char* getDataPathName(DataPath path)
@@ -211,6 +244,11 @@ void describeBenchOptions(osg::ApplicationUsage& usage)
         "--ao <off,on>", "Per-glyph ambient occlusion (GlyphCloud::computeOcclusion, setOcclusion): off "
                          "(default), on, or both, each case measured with each; its computation time is "
                          "printed and written to the CSV.");
+    usage.addCommandLineOption(
+        "--screen-effects <off,ao,outline,both>",
+        "Screen-space ambient occlusion and outlines (osgGlyphs::ScreenEffects, default settings) around "
+        "the cloud: off (default), ao, outline, both, each case measured with each, so that their cost "
+        "compares with the plain frame of the same run.");
     usage.addCommandLineOption("--equal-coverage",
                                "Give cones, arrows and cylinders the radius at which they cover as much of "
                                "the view as spheres of the radius above, at the same n (from one untimed "

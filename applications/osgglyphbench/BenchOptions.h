@@ -27,6 +27,18 @@ enum class DataPath
 /** "vbo", "client-arrays" or "display-list", as --data-path and the CSV spell it. */
 const char* getDataPathName(DataPath path);
 
+/** The screen-space effects of a case (osgGlyphs::ScreenEffects; --screen-effects). */
+enum class ScreenEffectsChoice
+{
+    Off,
+    AmbientOcclusion,
+    Outlines,
+    Both
+};
+
+/** "off", "ao", "outline" or "both", as --screen-effects and the CSV spell it. */
+const char* getScreenEffectsName(ScreenEffectsChoice choice);
+
 /** Everything the command line sets. */
 struct BenchSettings
 {
@@ -41,6 +53,8 @@ struct BenchSettings
     std::vector<osgGlyphs::GlyphCulling> cullings = {osgGlyphs::GlyphCulling::Occlusion};
     /** Per-glyph ambient occlusion off, on, or both (--ao). */
     std::vector<bool> ambientOcclusion = {false};
+    /** Screen-space ambient occlusion and outlines (--screen-effects). */
+    std::vector<ScreenEffectsChoice> screenEffects = {ScreenEffectsChoice::Off};
     bool equalCoverage = false;
     unsigned int seed = 1;
     double maxMs = 0.0; // 0: no limit

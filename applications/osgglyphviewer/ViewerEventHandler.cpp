@@ -154,6 +154,7 @@ void ViewerEventHandler::getUsage(osg::ApplicationUsage& usage) const
     usage.addKeyboardMouseBinding("l", "Toggle lighting: glyphs lit or unlit, and OpenGL lighting");
     usage.addKeyboardMouseBinding("n", "Next frame of a multi-frame file");
     usage.addKeyboardMouseBinding("p", "Previous frame of a multi-frame file");
+    usage.addKeyboardMouseBinding("o", "Toggle ambient occlusion per glyph (--ao)");
     usage.addKeyboardMouseBinding("Mouse left click", "Pick a glyph: select it and show its point's values "
                                                       "(every column, in the current frame)");
     usage.addKeyboardMouseBinding("r",

@@ -165,6 +165,8 @@ bool readViewOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std
         options.shadows = true;
     while (arguments.read("--ao"))
         options.ambientOcclusion = true;
+    if (!readScreenEffectsOptions(arguments, options.effects, options.ambientOcclusion, error))
+        return false;
     float r = 0.0f, g = 0.0f, b = 0.0f;
     if (arguments.read("--background", r, g, b))
     {
@@ -255,7 +257,8 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption(
         "--ao", "Ambient occlusion per glyph: each glyph darkened by the neighbours around it, "
                 "computed once per frame of data on the CPU (GlyphCloud::computeOcclusion); "
-                "key o toggles it.");
+                "key o toggles it. See --ao-mode for screen-space occlusion.");
+    describeScreenEffectsOptions(usage);
     usage.addCommandLineOption("--shadows",
                                "Cast shadows (osgShadow's ViewDependentShadowMap) from a light above "
                                "(+z) onto a ground plane under the data and onto the glyphs.");

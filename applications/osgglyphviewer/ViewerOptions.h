@@ -3,6 +3,8 @@
 #ifndef OSGGLYPHVIEWER_VIEWEROPTIONS_H
 #define OSGGLYPHVIEWER_VIEWEROPTIONS_H 1
 
+#include "ScreenEffectsOptions.h"
+
 #include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsHeadless/HeadlessContext>
 #include <osgGlyphsTiles/TileBudget>
@@ -55,7 +57,8 @@ struct ViewerOptions
     std::vector<osg::Plane> clipPlanes; // --clip A B C D: keep A x + B y + C z + D >= 0
     bool clipCaps = false;
     bool shadows = false;          // --shadows: a shadowed scene with a ground plane
-    bool ambientOcclusion = false; // --ao: per-glyph ambient occlusion
+    bool ambientOcclusion = false; // --ao: ambient occlusion, of the kind effects.aoMode says
+    ScreenEffectsOptions effects;  // --ao-mode, --ao-radius, --outline
 
     // Output
     bool offscreen = false;

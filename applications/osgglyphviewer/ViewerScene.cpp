@@ -21,10 +21,11 @@
 
 ViewerScene::ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphsData::ColorKey& key)
     : _source(source), _numFrames(numFrames), _key(key), _root(new osg::Group), _clipNode(new osg::ClipNode),
-      _content(new osg::Group)
+      _effects(new osgGlyphs::ScreenEffects), _content(new osg::Group)
 {
     _root->addChild(_clipNode.get());
-    _clipNode->addChild(_content.get());
+    _clipNode->addChild(_effects.get());
+    _effects->addChild(_content.get());
     setLit(true);
 }
 
@@ -319,6 +320,6 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
     scene->setLit(options.mapping.lit);
     scene->setClipPlanes(options.clipPlanes, options.clipCaps);
     scene->setShadows(options.shadows);
-    scene->setAmbientOcclusion(options.ambientOcclusion);
+    applyScreenEffectsOptions(*scene, options.effects, options.ambientOcclusion);
     return scene;
 }

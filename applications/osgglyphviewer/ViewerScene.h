@@ -63,6 +63,9 @@ public:
     void setAmbientOcclusion(bool on);
     bool getAmbientOcclusion() const { return _ambientOcclusion; }
 
+    /** The screen-space ambient occlusion and outlines of the content (off by default). */
+    osgGlyphs::ScreenEffects* getScreenEffects() { return _effects.get(); }
+
     /** Lit or flat glyphs, for every glyph of the scene. */
     void setLit(bool lit);
     bool getLit() const { return _lit; }
@@ -106,6 +109,7 @@ protected:
     osg::ref_ptr<osg::Group> _root;
     osg::ref_ptr<osg::ClipNode> _clipNode;   // between the root (or the shadowed scene) and the content
     osg::ref_ptr<osg::Group> _shadowedScene; // between the root and the clip node, with --shadows
+    osg::ref_ptr<osgGlyphs::ScreenEffects> _effects; // between the clip node and the content
     osg::ref_ptr<osg::Group> _content;
     bool _hasHomeView = false;
     CameraView _homeView;

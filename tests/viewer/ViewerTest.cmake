@@ -3,7 +3,7 @@
 #         -DDATA_DIR=<data> -DWORK_DIR=<scratch> -P ViewerTest.cmake
 # Cases: render, cone, frame, malformed, unknown_column, unknown_option, frames, default, help,
 # stray_shaders, broken_shader, pick, hidden_cones, hidden_radius, hidden_sub_pixel, hidden_bounds,
-# far, vast, clip, radius_column, shadows.
+# far, vast, clip, radius_column, shadows, screen_effects.
 cmake_minimum_required(VERSION 3.25)
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -103,12 +103,13 @@ elseif(CASE STREQUAL "help")
     expect_success(--help)
     foreach(option --format --frame --random --seed --position --radius --radius-by --color-by --colormap --range
             --vector --length-scale --glyph --unlit --technique --size --camera --fov --background --clip --clip-cap
-            --shadows --offscreen --headless --output --depth-output --frames --pick)
+            --shadows --ao --ao-mode --ao-radius --outline --offscreen --headless --output --depth-output --frames
+            --pick)
         if(NOT out MATCHES "\n  ${option} ")
             message(FATAL_ERROR "--help does not list ${option}")
         endif()
     endforeach()
-    foreach(key l n p r)
+    foreach(key l n p r o a e)
         if(NOT out MATCHES "\n  ${key}  ")
             message(FATAL_ERROR "--help does not list key ${key}")
         endif()
@@ -243,6 +244,19 @@ elseif(CASE STREQUAL "vast")
         message(FATAL_ERROR "unexpected warning")
     endif()
     check(coverage vast.png 0.005)
+elseif(CASE STREQUAL "screen_effects")
+    # Outlines and screen-space occlusion change the picture, not the depth; bad values fail.
+    expect_success(${spheres} --output plain.png ${view})
+    expect_success(${spheres} --output outline.png --depth-output outline.pfm --outline 2 ${view})
+    expect_success(${spheres} --output screen.png --ao-mode screen ${view})
+    expect_success(${spheres} --output both.png --ao-mode both --outline ${view})
+    check(depth outline.pfm 160 120 30 5 0.5 ${centres})
+    check(differ plain.png outline.png 0.02)
+    check(differ plain.png screen.png 0.005)
+    check(differ outline.png both.png 0.005)
+    expect_failure("--ao-mode 'fog': unknown mode \\(glyph, screen, both\\)" ${spheres} --offscreen --ao-mode fog)
+    expect_failure("--outline 0.5: the width goes from 1 to 32 pixels" ${spheres} --offscreen --outline 0.5)
+    expect_failure("--ao-radius needs a positive distance" ${spheres} --offscreen --ao-radius -1)
 else()
     message(FATAL_ERROR "unknown CASE '${CASE}'")
 endif()

@@ -144,6 +144,20 @@ osg::Program* GlyphStateCache::getSurfaceProgram()
     return program.get();
 }
 
+osg::Program* GlyphStateCache::getScreenEffectsProgram()
+{
+    const std::string NAME = "screen effects";
+    std::lock_guard<std::mutex> lock(_mutex);
+    osg::ref_ptr<osg::Program>& program = _programs[NAME];
+    if (!program)
+        program =
+            new detail::GlyphProgram(NAME,
+                                     {{osg::Shader::VERTEX, "osgGlyphs/screen-effects.vert"},
+                                      {osg::Shader::FRAGMENT, "osgGlyphs/screen-effects.frag"}},
+                                     {}, [this](const std::string& error) { reportProgramError(error); });
+    return program.get();
+}
+
 osg::ref_ptr<osg::StateSet> GlyphStateCache::getStateSet(const GlyphTechnique& technique,
                                                          const GlyphVariant& requested)
 {
