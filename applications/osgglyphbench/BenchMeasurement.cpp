@@ -2,6 +2,7 @@
 
 #include "BenchText.h"
 
+#include <osgGlyphs/DepthPeeling>
 #include <osgGlyphs/GlyphCloud>
 #include <osgGlyphs/GlyphStateCache>
 #include <osgGlyphsData/RandomCloud>
@@ -190,10 +191,20 @@ bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings
 {
     result = BenchResult{c.technique, c.shape, c.n, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, radius, c.culling};
     result.ambientOcclusion = c.ambientOcclusion;
-    osg::ref_ptr<osg::Geode> scene = new osg::Geode;
+    result.opacity = c.opacity;
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud =
         createCloud(c, radius, settings, result.bytesPerGlyph, result.occlusionSeconds);
-    scene->addDrawable(cloud.get());
+    geode->addDrawable(cloud.get());
+    osg::ref_ptr<osg::Node> scene = geode;
+    if (c.opacity < 1.0f)
+    {
+        cloud->setOpacity(c.opacity);
+        osg::ref_ptr<osgGlyphs::DepthPeeling> peeling = new osgGlyphs::DepthPeeling;
+        peeling->setNumLayers(settings.peelLayers);
+        peeling->addChild(geode.get());
+        scene = peeling;
+    }
     std::vector<double> frameMs;
     osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer;
     if (!measure(settings, scene.get(), result.firstFrameMs, frameMs, viewer, error))

@@ -17,6 +17,7 @@ struct BenchCase
     unsigned int n;
     osgGlyphs::GlyphCulling culling = osgGlyphs::GlyphCulling::Off;
     bool ambientOcclusion = false;
+    float opacity = 1.0f;
 };
 
 /** One measured case: a row of the CSV. */
@@ -41,6 +42,7 @@ struct BenchResult
     bool ambientOcclusion = false;
     /** Seconds GlyphCloud::computeOcclusion() took, with ambient occlusion. */
     double occlusionSeconds = 0.0;
+    float opacity = 1.0f;
 };
 
 /** Measures one case, a random cloud of glyphs of this radius, in a fresh headless viewer: one

@@ -53,7 +53,9 @@ std::vector<BenchCase> listCases(const BenchSettings& settings)
             for (const std::string& technique : measured)
                 for (osgGlyphs::GlyphCulling culling : getCullings(technique, settings))
                     for (bool ambientOcclusion : settings.ambientOcclusion)
-                        cases.push_back(BenchCase{technique, shape, n, culling, ambientOcclusion});
+                        for (float opacity : settings.opacities)
+                            cases.push_back(
+                                BenchCase{technique, shape, n, culling, ambientOcclusion, opacity});
     }
     return cases;
 }
@@ -66,7 +68,8 @@ bool isOverBudget(const std::vector<BenchResult>& results, const BenchCase& c, c
     for (const BenchResult& result : results)
     {
         if (result.technique == c.technique && result.shape == c.shape && result.culling == c.culling &&
-            result.ambientOcclusion == c.ambientOcclusion && result.msMedian > settings.maxMs)
+            result.ambientOcclusion == c.ambientOcclusion && result.opacity == c.opacity &&
+            result.msMedian > settings.maxMs)
             return true;
     }
     return false;

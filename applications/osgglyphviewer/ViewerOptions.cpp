@@ -165,6 +165,8 @@ bool readViewOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std
         options.shadows = true;
     while (arguments.read("--ao"))
         options.ambientOcclusion = true;
+    if (!readTransparencyOptions(arguments, options.transparency, error))
+        return false;
     float r = 0.0f, g = 0.0f, b = 0.0f;
     if (arguments.read("--background", r, g, b))
     {
@@ -256,6 +258,7 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
         "--ao", "Ambient occlusion per glyph: each glyph darkened by the neighbours around it, "
                 "computed once per frame of data on the CPU (GlyphCloud::computeOcclusion); "
                 "key o toggles it.");
+    describeTransparencyOptions(usage);
     usage.addCommandLineOption("--shadows",
                                "Cast shadows (osgShadow's ViewDependentShadowMap) from a light above "
                                "(+z) onto a ground plane under the data and onto the glyphs.");

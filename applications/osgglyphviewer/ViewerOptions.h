@@ -3,6 +3,8 @@
 #ifndef OSGGLYPHVIEWER_VIEWEROPTIONS_H
 #define OSGGLYPHVIEWER_VIEWEROPTIONS_H 1
 
+#include "Transparency.h"
+
 #include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsHeadless/HeadlessContext>
 #include <osgGlyphsTiles/TileBudget>
@@ -56,6 +58,7 @@ struct ViewerOptions
     bool clipCaps = false;
     bool shadows = false;          // --shadows: a shadowed scene with a ground plane
     bool ambientOcclusion = false; // --ao: per-glyph ambient occlusion
+    TransparencyOptions transparency;
 
     // Output
     bool offscreen = false;

@@ -20,10 +20,11 @@
 
 ViewerScene::ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphsData::ColorKey& key)
     : _source(source), _numFrames(numFrames), _key(key), _root(new osg::Group), _clipNode(new osg::ClipNode),
-      _content(new osg::Group)
+      _transparency(new Transparency), _content(new osg::Group)
 {
     _root->addChild(_clipNode.get());
-    _clipNode->addChild(_content.get());
+    _clipNode->addChild(_transparency->getNode());
+    _transparency->getNode()->addChild(_content.get());
     setLit(true);
 }
 
@@ -313,5 +314,6 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
     scene->setClipPlanes(options.clipPlanes, options.clipCaps);
     scene->setShadows(options.shadows);
     scene->setAmbientOcclusion(options.ambientOcclusion);
+    scene->getTransparency()->setOptions(options.transparency);
     return scene;
 }

@@ -63,6 +63,9 @@ public:
     void setAmbientOcclusion(bool on);
     bool getAmbientOcclusion() const { return _ambientOcclusion; }
 
+    /** The transparency of the content (--opacity; key a). */
+    Transparency* getTransparency() { return _transparency.get(); }
+
     /** Lit or flat glyphs, for every glyph of the scene. */
     void setLit(bool lit);
     bool getLit() const { return _lit; }
@@ -104,8 +107,9 @@ protected:
     bool _ambientOcclusion = false;
     osgGlyphsData::ColorKey _key;
     osg::ref_ptr<osg::Group> _root;
-    osg::ref_ptr<osg::ClipNode> _clipNode;   // between the root (or the shadowed scene) and the content
-    osg::ref_ptr<osg::Group> _shadowedScene; // between the root and the clip node, with --shadows
+    osg::ref_ptr<osg::ClipNode> _clipNode;    // between the root (or the shadowed scene) and the content
+    osg::ref_ptr<osg::Group> _shadowedScene;  // between the root and the clip node, with --shadows
+    osg::ref_ptr<Transparency> _transparency; // its node between the clip node and the content
     osg::ref_ptr<osg::Group> _content;
     bool _hasHomeView = false;
     CameraView _homeView;

@@ -105,6 +105,8 @@ void osgGlyphs::setGlyphAmbientOcclusion(osg::StateSet& stateSet, bool on)
                            osg::StateAttribute::OVERRIDE | osg::StateAttribute::OFF);
 }
 
+const char* const osgGlyphs::GLYPH_DEPTH_PEEL_DEFINE = "OSGGLYPHS_DEPTH_PEEL";
+
 GlyphStateCache* GlyphStateCache::instance()
 {
     static osg::ref_ptr<GlyphStateCache> s_instance = new GlyphStateCache;
@@ -141,6 +143,20 @@ osg::Program* GlyphStateCache::getSurfaceProgram()
                                             {osg::Shader::FRAGMENT, "osgGlyphs/surface.frag"}},
                                            {{"osgGlyphs/defines.glsl", detail::generateDefinesGlsl()}},
                                            [this](const std::string& error) { reportProgramError(error); });
+    return program.get();
+}
+
+osg::Program* GlyphStateCache::getPeelingCompositeProgram()
+{
+    const std::string NAME = "peeling composition";
+    std::lock_guard<std::mutex> lock(_mutex);
+    osg::ref_ptr<osg::Program>& program = _programs[NAME];
+    if (!program)
+        program =
+            new detail::GlyphProgram(NAME,
+                                     {{osg::Shader::VERTEX, "osgGlyphs/peel-composite.vert"},
+                                      {osg::Shader::FRAGMENT, "osgGlyphs/peel-composite.frag"}},
+                                     {}, [this](const std::string& error) { reportProgramError(error); });
     return program.get();
 }
 
