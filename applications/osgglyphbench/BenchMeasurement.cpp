@@ -2,6 +2,7 @@
 
 #include "BenchText.h"
 
+#include <osgGlyphs/DepthPeeling>
 #include <osgGlyphs/GlyphCloud>
 #include <osgGlyphs/GlyphStateCache>
 #include <osgGlyphs/ScreenEffects>
@@ -199,12 +200,22 @@ bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings
     result = BenchResult{c.technique, c.shape, c.n, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, radius, c.culling};
     result.ambientOcclusion = c.ambientOcclusion;
     result.screenEffects = c.screenEffects;
+    result.opacity = c.opacity;
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud =
         createCloud(c, radius, settings, result.bytesPerGlyph, result.occlusionSeconds);
     geode->addDrawable(cloud.get());
+    osg::ref_ptr<osg::Group> content = geode;
+    if (c.opacity < 1.0f)
+    {
+        cloud->setOpacity(c.opacity);
+        osg::ref_ptr<osgGlyphs::DepthPeeling> peeling = new osgGlyphs::DepthPeeling;
+        peeling->setNumLayers(settings.peelLayers);
+        peeling->addChild(geode.get());
+        content = peeling;
+    }
     osg::ref_ptr<osg::Group> scene = new osgGlyphs::ScreenEffects;
-    scene->addChild(geode.get());
+    scene->addChild(content.get());
     applyScreenEffects(c.screenEffects, static_cast<osgGlyphs::ScreenEffects&>(*scene));
     std::vector<double> frameMs;
     osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer;

@@ -18,6 +18,7 @@ struct BenchCase
     osgGlyphs::GlyphCulling culling = osgGlyphs::GlyphCulling::Off;
     bool ambientOcclusion = false;
     ScreenEffectsChoice screenEffects = ScreenEffectsChoice::Off;
+    float opacity = 1.0f;
 };
 
 /** One measured case: a row of the CSV. */
@@ -43,6 +44,7 @@ struct BenchResult
     /** Seconds GlyphCloud::computeOcclusion() took, with ambient occlusion. */
     double occlusionSeconds = 0.0;
     ScreenEffectsChoice screenEffects = ScreenEffectsChoice::Off;
+    float opacity = 1.0f;
 };
 
 /** Measures one case, a random cloud of glyphs of this radius, in a fresh headless viewer: one

@@ -119,6 +119,16 @@ bool parseScreenEffects(const std::string& text, ScreenEffectsChoice& choice)
     return false;
 }
 
+bool parseOpacity(const std::string& text, float& opacity)
+{
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !(value > 0.0 && value <= 1.0))
+        return false;
+    opacity = static_cast<float>(value);
+    return true;
+}
+
 bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
 {
     std::string text;
@@ -143,6 +153,9 @@ bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
     if (arguments.read("--screen-effects", text) &&
         !parseList(arguments, "--screen-effects", text, "off, ao, outline, both", parseScreenEffects,
                    settings.screenEffects))
+        return false;
+    if (arguments.read("--opacity", text) &&
+        !parseList(arguments, "--opacity", text, "numbers above 0 up to 1", parseOpacity, settings.opacities))
         return false;
     if (arguments.read("--data-path", text) && !parseDataPath(text, settings.dataPath))
     {
@@ -171,6 +184,7 @@ void readValues(osg::ArgumentParser& arguments, BenchSettings& settings)
 {
     arguments.read("--size", settings.width, settings.height);
     arguments.read("--frames", settings.frames);
+    arguments.read("--peel-layers", settings.peelLayers);
     arguments.read("--radius", settings.radius);
     arguments.read("--radius-spacing", settings.radiusSpacing);
     settings.equalCoverage = arguments.read("--equal-coverage");
@@ -182,6 +196,8 @@ void readValues(osg::ArgumentParser& arguments, BenchSettings& settings)
         arguments.reportError("--size: width and height must be positive");
     if (settings.frames == 0)
         arguments.reportError("--frames: at least one frame");
+    if (settings.peelLayers == 0)
+        arguments.reportError("--peel-layers: at least one layer");
 }
 
 }
@@ -249,6 +265,11 @@ void describeBenchOptions(osg::ApplicationUsage& usage)
         "Screen-space ambient occlusion and outlines (osgGlyphs::ScreenEffects, default settings) around "
         "the cloud: off (default), ao, outline, both, each case measured with each, so that their cost "
         "compares with the plain frame of the same run.");
+    usage.addCommandLineOption(
+        "--opacity <a1,a2,...>",
+        "Cloud opacities (default 1): below 1 the cloud is transparent, under an osgGlyphs::DepthPeeling "
+        "node, so that 1,0.5 gives the cost of transparency against the opaque frame.");
+    usage.addCommandLineOption("--peel-layers <k>", "The layers depth peeling draws (default 4).");
     usage.addCommandLineOption("--equal-coverage",
                                "Give cones, arrows and cylinders the radius at which they cover as much of "
                                "the view as spheres of the radius above, at the same n (from one untimed "

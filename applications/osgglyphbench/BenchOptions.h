@@ -3,6 +3,7 @@
 #ifndef OSGGLYPHBENCH_BENCHOPTIONS_H
 #define OSGGLYPHBENCH_BENCHOPTIONS_H 1
 
+#include <osgGlyphs/DepthPeeling>
 #include <osgGlyphs/GlyphCulling>
 #include <osgGlyphs/GlyphTechnique>
 #include <osgGlyphsHeadless/HeadlessContext>
@@ -55,6 +56,9 @@ struct BenchSettings
     std::vector<bool> ambientOcclusion = {false};
     /** Screen-space ambient occlusion and outlines (--screen-effects). */
     std::vector<ScreenEffectsChoice> screenEffects = {ScreenEffectsChoice::Off};
+    /** The clouds' opacities (--opacity): 1 draws them opaque, less under a DepthPeeling node. */
+    std::vector<float> opacities = {1.0f};
+    unsigned int peelLayers = osgGlyphs::DepthPeeling::DEFAULT_NUM_LAYERS; // --peel-layers
     bool equalCoverage = false;
     unsigned int seed = 1;
     double maxMs = 0.0; // 0: no limit

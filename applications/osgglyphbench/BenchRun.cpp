@@ -54,8 +54,9 @@ std::vector<BenchCase> listCases(const BenchSettings& settings)
                 for (osgGlyphs::GlyphCulling culling : getCullings(technique, settings))
                     for (bool ambientOcclusion : settings.ambientOcclusion)
                         for (ScreenEffectsChoice effects : settings.screenEffects)
-                            cases.push_back(
-                                BenchCase{technique, shape, n, culling, ambientOcclusion, effects});
+                            for (float opacity : settings.opacities)
+                                cases.push_back(BenchCase{technique, shape, n, culling, ambientOcclusion,
+                                                          effects, opacity});
     }
     return cases;
 }
@@ -69,7 +70,7 @@ bool isOverBudget(const std::vector<BenchResult>& results, const BenchCase& c, c
     {
         if (result.technique == c.technique && result.shape == c.shape && result.culling == c.culling &&
             result.ambientOcclusion == c.ambientOcclusion && result.screenEffects == c.screenEffects &&
-            result.msMedian > settings.maxMs)
+            result.opacity == c.opacity && result.msMedian > settings.maxMs)
             return true;
     }
     return false;

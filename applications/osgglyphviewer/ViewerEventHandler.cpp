@@ -51,6 +51,17 @@ bool ViewerEventHandler::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActi
                   << std::endl;
         aa.requestRedraw();
         return true;
+    case 'x':
+    {
+        Transparency* transparency = _scene->getTransparency();
+        transparency->setOn(!transparency->isOn());
+        std::cout << PROGRAM << ": transparency "
+                  << (transparency->isOn() ? "at opacity " + std::to_string(transparency->getOpacity())
+                                           : "off")
+                  << std::endl;
+        aa.requestRedraw();
+        return true;
+    }
     case 'r':
         osgGlyphs::GlyphStateCache::instance()->reloadShaders();
         _reloaded = true;
@@ -152,6 +163,8 @@ void ViewerEventHandler::stepFrame(int step)
 void ViewerEventHandler::getUsage(osg::ApplicationUsage& usage) const
 {
     usage.addKeyboardMouseBinding("l", "Toggle lighting: glyphs lit or unlit, and OpenGL lighting");
+    usage.addKeyboardMouseBinding("x", "Toggle transparency: glyphs at the --opacity (default 0.5), blended "
+                                       "in depth order by depth peeling, or opaque");
     usage.addKeyboardMouseBinding("n", "Next frame of a multi-frame file");
     usage.addKeyboardMouseBinding("p", "Previous frame of a multi-frame file");
     usage.addKeyboardMouseBinding("o", "Toggle ambient occlusion per glyph (--ao)");

@@ -165,7 +165,8 @@ bool readViewOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std
         options.shadows = true;
     while (arguments.read("--ao"))
         options.ambientOcclusion = true;
-    if (!readScreenEffectsOptions(arguments, options.effects, options.ambientOcclusion, error))
+    if (!readScreenEffectsOptions(arguments, options.effects, options.ambientOcclusion, error) ||
+        !readTransparencyOptions(arguments, options.transparency, error))
         return false;
     float r = 0.0f, g = 0.0f, b = 0.0f;
     if (arguments.read("--background", r, g, b))
@@ -259,6 +260,7 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
                 "computed once per frame of data on the CPU (GlyphCloud::computeOcclusion); "
                 "key o toggles it. See --ao-mode for screen-space occlusion.");
     describeScreenEffectsOptions(usage);
+    describeTransparencyOptions(usage);
     usage.addCommandLineOption("--shadows",
                                "Cast shadows (osgShadow's ViewDependentShadowMap) from a light above "
                                "(+z) onto a ground plane under the data and onto the glyphs.");

@@ -4,6 +4,7 @@
 #define OSGGLYPHVIEWER_VIEWEROPTIONS_H 1
 
 #include "ScreenEffectsOptions.h"
+#include "Transparency.h"
 
 #include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsHeadless/HeadlessContext>
@@ -56,9 +57,10 @@ struct ViewerOptions
     osg::Vec4 background = osg::Vec4(1.0f, 1.0f, 1.0f, 1.0f);
     std::vector<osg::Plane> clipPlanes; // --clip A B C D: keep A x + B y + C z + D >= 0
     bool clipCaps = false;
-    bool shadows = false;          // --shadows: a shadowed scene with a ground plane
-    bool ambientOcclusion = false; // --ao: ambient occlusion, of the kind effects.aoMode says
-    ScreenEffectsOptions effects;  // --ao-mode, --ao-radius, --outline
+    bool shadows = false;             // --shadows: a shadowed scene with a ground plane
+    bool ambientOcclusion = false;    // --ao: ambient occlusion, of the kind effects.aoMode says
+    ScreenEffectsOptions effects;     // --ao-mode, --ao-radius, --outline
+    TransparencyOptions transparency; // --opacity, --peel-layers
 
     // Output
     bool offscreen = false;

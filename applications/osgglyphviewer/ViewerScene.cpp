@@ -21,11 +21,12 @@
 
 ViewerScene::ViewerScene(const FrameSource& source, std::size_t numFrames, const osgGlyphsData::ColorKey& key)
     : _source(source), _numFrames(numFrames), _key(key), _root(new osg::Group), _clipNode(new osg::ClipNode),
-      _effects(new osgGlyphs::ScreenEffects), _content(new osg::Group)
+      _effects(new osgGlyphs::ScreenEffects), _transparency(new Transparency), _content(new osg::Group)
 {
     _root->addChild(_clipNode.get());
     _clipNode->addChild(_effects.get());
-    _effects->addChild(_content.get());
+    _effects->addChild(_transparency->getNode());
+    _transparency->getNode()->addChild(_content.get());
     setLit(true);
 }
 
@@ -321,5 +322,6 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
     scene->setClipPlanes(options.clipPlanes, options.clipCaps);
     scene->setShadows(options.shadows);
     applyScreenEffectsOptions(*scene, options.effects, options.ambientOcclusion);
+    scene->getTransparency()->setOptions(options.transparency);
     return scene;
 }

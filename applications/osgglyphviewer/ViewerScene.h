@@ -65,6 +65,8 @@ public:
 
     /** The screen-space ambient occlusion and outlines of the content (off by default). */
     osgGlyphs::ScreenEffects* getScreenEffects() { return _effects.get(); }
+    /** The transparency of the content (--opacity; key x). */
+    Transparency* getTransparency() { return _transparency.get(); }
 
     /** Lit or flat glyphs, for every glyph of the scene. */
     void setLit(bool lit);
@@ -109,7 +111,8 @@ protected:
     osg::ref_ptr<osg::Group> _root;
     osg::ref_ptr<osg::ClipNode> _clipNode;   // between the root (or the shadowed scene) and the content
     osg::ref_ptr<osg::Group> _shadowedScene; // between the root and the clip node, with --shadows
-    osg::ref_ptr<osgGlyphs::ScreenEffects> _effects; // between the clip node and the content
+    osg::ref_ptr<osgGlyphs::ScreenEffects> _effects; // below the clip node
+    osg::ref_ptr<Transparency> _transparency;        // its node between the effects and the content
     osg::ref_ptr<osg::Group> _content;
     bool _hasHomeView = false;
     CameraView _homeView;

@@ -11,8 +11,12 @@
 #include "lighting.glsl"
 #include "varyings.glsl"
 #include "clip.glsl"
+#include "peel.glsl"
 
 out vec4 color;
+
+// GlyphCloud::setOpacity, which scales every glyph's alpha.
+uniform float osgGlyphs_opacity;
 
 // The selection's pass (GlyphCloud::setSelection): a tint and its strength; 0 otherwise.
 uniform vec4 osgGlyphs_highlight;
@@ -150,10 +154,15 @@ void main()
     if (ndcZ > 1.0)
         discard; // beyond the far plane, where fixed-function geometry is clipped too
     gl_FragDepth = windowDepth(ndcZ);
+#ifdef OSGGLYPHS_DEPTH_PEEL
+    if (isPeeledAway(gl_FragDepth))
+        discard;
+#endif
     float ambientLight = 1.0;
 #ifdef OSGGLYPHS_AMBIENT_OCCLUSION
     ambientLight = clamp(fragOcclusion.w + dot(fragOcclusion.xyz, normal), 0.0, 1.0);
 #endif
-    color = vec4(shade(fragColor.rgb, position, normal, -direction, ambientLight), fragColor.a);
+    color = vec4(shade(fragColor.rgb, position, normal, -direction, ambientLight),
+                 fragColor.a * osgGlyphs_opacity);
     color.rgb = mix(color.rgb, osgGlyphs_highlight.rgb, osgGlyphs_highlight.a);
 }

@@ -5,6 +5,7 @@
 #include "defines.glsl"
 #include "projection.glsl"
 #include "lighting.glsl"
+#include "peel.glsl"
 
 in vec3 surfacePosition;
 in vec3 surfaceNormal;
@@ -14,6 +15,10 @@ out vec4 color;
 
 void main()
 {
+#ifdef OSGGLYPHS_DEPTH_PEEL
+    if (isPeeledAway(gl_FragCoord.z))
+        discard;
+#endif
     vec3 normal = normalize(gl_FrontFacing ? surfaceNormal : -surfaceNormal);
     vec3 toEye = isOrthographic() ? vec3(0.0, 0.0, 1.0) : normalize(-surfacePosition);
     color = vec4(shade(surfaceColor.rgb, surfacePosition, normal, toEye), surfaceColor.a);

@@ -6,7 +6,7 @@
 #         -DWIDTH=320 -DHEIGHT=240 -DFRAMES=3 -P CheckBenchCsv.cmake
 cmake_minimum_required(VERSION 3.25)
 
-set(header "technique,shape,n,width,height,frames,ms_median,ms_min,ms_max,first_frame_ms,gpu_bytes_per_glyph,data_path,coverage,radius,attributes,culling,overdraw,submitted,ao,ao_seconds,screen_effects")
+set(header "technique,shape,n,width,height,frames,ms_median,ms_min,ms_max,first_frame_ms,gpu_bytes_per_glyph,data_path,coverage,radius,attributes,culling,overdraw,submitted,ao,ao_seconds,screen_effects,opacity")
 
 if(NOT EXISTS "${CSV}")
     message(FATAL_ERROR "${CSV} does not exist")
@@ -23,13 +23,15 @@ function(check_positive name value line)
     endif()
 endfunction()
 
+string(REPLACE "," ";" header_fields "${header}")
+list(LENGTH header_fields num_fields)
 set(keys)
 set(techniques)
 foreach(line IN LISTS lines)
     string(REPLACE "," ";" fields "${line}")
     list(LENGTH fields count)
-    if(NOT count EQUAL 21)
-        message(FATAL_ERROR "${CSV}: ${count} fields instead of 21 in\n  ${line}")
+    if(NOT count EQUAL num_fields)
+        message(FATAL_ERROR "${CSV}: ${count} fields instead of ${num_fields} in\n  ${line}")
     endif()
     list(GET fields 0 technique)
     list(GET fields 1 shape)

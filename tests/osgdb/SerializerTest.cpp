@@ -34,6 +34,7 @@ osg::ref_ptr<GlyphCloud> createFullCloud()
     cloud->setLit(false);
     cloud->setCompressedAttributes(false);
     cloud->setMaterial(0.31f, 0.27f, 17.0f);
+    cloud->setOpacity(0.35f);
     cloud->setLengthScale(0.75f);
     cloud->setUniformLength(true);
     cloud->setAnchor(osgGlyphs::GlyphAnchor::Tail);
@@ -82,6 +83,7 @@ void expectSameCloud(const GlyphCloud& a, const GlyphCloud& b)
     EXPECT_EQ(a.getAmbient(), b.getAmbient());
     EXPECT_EQ(a.getSpecular(), b.getSpecular());
     EXPECT_EQ(a.getShininess(), b.getShininess());
+    EXPECT_EQ(a.getOpacity(), b.getOpacity());
     EXPECT_EQ(a.getLengthScale(), b.getLengthScale());
     EXPECT_EQ(a.getUniformLength(), b.getUniformLength());
     EXPECT_EQ(a.getAnchor(), b.getAnchor());

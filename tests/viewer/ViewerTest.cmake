@@ -166,6 +166,17 @@ elseif(CASE STREQUAL "shadows")
     check(differ plain.png shadows.png 0.3)
     expect_success(--output builtin.png --shadows --size 160 120)
     check(coverage builtin.png 0.1)
+elseif(CASE STREQUAL "transparency")
+    # --opacity: the spheres blend over each other and the background (the picture changes); at
+    # opacity 1 the peeled picture is the opaque one (within the rounding of its half-float layers).
+    set(oblique --size 160 120 --camera 0 -5 4 0 0 0 0 0 1 --fov 40 --radius 0.5)
+    expect_success(${spheres} --output plain.png ${oblique})
+    expect_success(${spheres} --output half.png --opacity 0.5 --peel-layers 3 ${oblique})
+    expect_success(${spheres} --output whole.png --opacity 1 ${oblique})
+    check(differ plain.png half.png 0.05)
+    check(match whole.png plain.png 2 0.0)
+    expect_failure("--opacity: the opacity goes from 0 \\(excluded\\) to 1" ${spheres} --opacity 0)
+    expect_failure("--peel-layers: from 1 to 64 layers" ${spheres} --peel-layers 0)
 elseif(CASE STREQUAL "radius_column")
     # Without --radius-by: a radius column gives the radii, else a diameter column halved.
     set(view_without_radius --size 160 120 --camera 0 0 5 0 0 0 0 1 0 --fov 30)

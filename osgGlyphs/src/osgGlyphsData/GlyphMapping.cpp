@@ -532,9 +532,13 @@ bool GlyphMapper::setColors(GlyphCloud& cloud, const PointData& data, std::strin
             error = frameName(data) + ": no red, green, blue columns; " + listColumns(data);
             return false;
         }
+        // An "alpha" column (PLY's name) is read on the scale of the colours.
+        ColumnValues alpha;
+        const bool hasAlpha = alpha.assign(data, "alpha");
         for (std::size_t i = 0; i < n; ++i)
-            (*colors)[i] = toVec4ub(osg::Vec4((*rgb[0])[i] * _rgbScale, (*rgb[1])[i] * _rgbScale,
-                                              (*rgb[2])[i] * _rgbScale, 1.0f));
+            (*colors)[i] =
+                toVec4ub(osg::Vec4((*rgb[0])[i] * _rgbScale, (*rgb[1])[i] * _rgbScale,
+                                   (*rgb[2])[i] * _rgbScale, hasAlpha ? (*alpha)[i] * _rgbScale : 1.0f));
     }
     else
     {

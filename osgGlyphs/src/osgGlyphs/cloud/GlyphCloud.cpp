@@ -41,8 +41,9 @@ GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
       _anchor(other._anchor), _lengthScale(other._lengthScale), _uniformLength(other._uniformLength),
       _arrowParams(other._arrowParams), _lit(other._lit), _compressedAttributes(other._compressedAttributes),
       _autoRange(other._autoRange), _rangeMin(other._rangeMin), _rangeMax(other._rangeMax),
-      _material(other._material), _culling(other._culling), _cullingChunkSize(other._cullingChunkSize),
-      _selection(other._selection), _selectionColor(other._selectionColor)
+      _material(other._material), _opacity(other._opacity), _culling(other._culling),
+      _cullingChunkSize(other._cullingChunkSize), _selection(other._selection),
+      _selectionColor(other._selectionColor)
 {
     initialize();
 }
@@ -68,9 +69,11 @@ void GlyphCloud::initialize()
     _materialUniform = new osg::Uniform("osgGlyphs_material", _material);
     _vectorParamsUniform = new osg::Uniform("osgGlyphs_vectorParams", osg::Vec3());
     _arrowParamsUniform = new osg::Uniform("osgGlyphs_arrowParams", _arrowParams);
+    _opacityUniform = new osg::Uniform("osgGlyphs_opacity", _opacity);
     for (osg::Uniform* uniform :
          {_radiusScaleUniform.get(), _baseColorUniform.get(), _scalarToColormapUniform.get(),
-          _materialUniform.get(), _vectorParamsUniform.get(), _arrowParamsUniform.get()})
+          _materialUniform.get(), _vectorParamsUniform.get(), _arrowParamsUniform.get(),
+          _opacityUniform.get()})
         _cloudStateSet->addUniform(uniform);
     updateVectorUniforms();
     if (!_colorMap)
@@ -277,6 +280,12 @@ void GlyphCloud::setMaterial(float ambient, float specular, float shininess)
 {
     _material.set(ambient, specular, shininess);
     _materialUniform->set(_material);
+}
+
+void GlyphCloud::setOpacity(float opacity)
+{
+    _opacity = opacity;
+    _opacityUniform->set(_opacity);
 }
 
 void GlyphCloud::setCulling(GlyphCulling culling)

@@ -105,6 +105,8 @@ void osgGlyphs::setGlyphAmbientOcclusion(osg::StateSet& stateSet, bool on)
                            osg::StateAttribute::OVERRIDE | osg::StateAttribute::OFF);
 }
 
+const char* const osgGlyphs::GLYPH_DEPTH_PEEL_DEFINE = "OSGGLYPHS_DEPTH_PEEL";
+
 GlyphStateCache* GlyphStateCache::instance()
 {
     static osg::ref_ptr<GlyphStateCache> s_instance = new GlyphStateCache;
@@ -129,33 +131,39 @@ osg::Program* GlyphStateCache::getProgram(const GlyphTechnique& technique)
     return getProgramLocked(technique);
 }
 
+osg::Program* GlyphStateCache::getFileProgram(const std::string& name, const std::string& vertexFile,
+                                              const std::string& fragmentFile, bool withDefines)
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    osg::ref_ptr<osg::Program>& program = _programs[name];
+    if (!program)
+    {
+        std::map<std::string, std::string> generated;
+        if (withDefines)
+            generated["osgGlyphs/defines.glsl"] = detail::generateDefinesGlsl();
+        program = new detail::GlyphProgram(
+            name, {{osg::Shader::VERTEX, vertexFile}, {osg::Shader::FRAGMENT, fragmentFile}}, generated,
+            [this](const std::string& error) { reportProgramError(error); });
+    }
+    return program.get();
+}
+
+// The names are not techniques' names: those are single words.
 osg::Program* GlyphStateCache::getSurfaceProgram()
 {
-    // Not a technique's name: those are single words.
-    const std::string NAME = "surface shading";
-    std::lock_guard<std::mutex> lock(_mutex);
-    osg::ref_ptr<osg::Program>& program = _programs[NAME];
-    if (!program)
-        program = new detail::GlyphProgram(NAME,
-                                           {{osg::Shader::VERTEX, "osgGlyphs/surface.vert"},
-                                            {osg::Shader::FRAGMENT, "osgGlyphs/surface.frag"}},
-                                           {{"osgGlyphs/defines.glsl", detail::generateDefinesGlsl()}},
-                                           [this](const std::string& error) { reportProgramError(error); });
-    return program.get();
+    return getFileProgram("surface shading", "osgGlyphs/surface.vert", "osgGlyphs/surface.frag", true);
 }
 
 osg::Program* GlyphStateCache::getScreenEffectsProgram()
 {
-    const std::string NAME = "screen effects";
-    std::lock_guard<std::mutex> lock(_mutex);
-    osg::ref_ptr<osg::Program>& program = _programs[NAME];
-    if (!program)
-        program =
-            new detail::GlyphProgram(NAME,
-                                     {{osg::Shader::VERTEX, "osgGlyphs/screen-effects.vert"},
-                                      {osg::Shader::FRAGMENT, "osgGlyphs/screen-effects.frag"}},
-                                     {}, [this](const std::string& error) { reportProgramError(error); });
-    return program.get();
+    return getFileProgram("screen effects", "osgGlyphs/fullscreen.vert", "osgGlyphs/screen-effects.frag",
+                          false);
+}
+
+osg::Program* GlyphStateCache::getPeelingCompositeProgram()
+{
+    return getFileProgram("peeling composition", "osgGlyphs/fullscreen.vert", "osgGlyphs/peel-composite.frag",
+                          false);
 }
 
 osg::ref_ptr<osg::StateSet> GlyphStateCache::getStateSet(const GlyphTechnique& technique,

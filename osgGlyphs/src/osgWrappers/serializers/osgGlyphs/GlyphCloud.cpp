@@ -181,4 +181,5 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
     ADD_USER_SERIALIZER(Culling);
     ADD_UINT_SERIALIZER(CullingChunkSize, 512u);
     ADD_OBJECT_SERIALIZER(Occlusion, osg::Vec4ubArray, NULL);
+    ADD_FLOAT_SERIALIZER(Opacity, 1.0f);
 }

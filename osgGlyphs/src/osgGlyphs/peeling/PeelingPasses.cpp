@@ -1,0 +1,252 @@
+#include "PeelingPasses.h"
+
+#include <osgGlyphs/DepthPeeling>
+#include <osgGlyphs/GlyphStateCache>
+
+#include <osg/BlendFunc>
+#include <osg/Depth>
+#include <osg/GLExtensions>
+
+using namespace osgGlyphs;
+using namespace osgGlyphs::detail;
+
+namespace
+{
+
+const unsigned int LAYER_TEXTURE_UNIT = 0;
+
+osg::ref_ptr<osg::Texture2D> createTarget(int width, int height, GLint internalFormat, GLenum format)
+{
+    osg::ref_ptr<osg::Texture2D> texture = new osg::Texture2D;
+    texture->setTextureSize(width, height);
+    texture->setInternalFormat(internalFormat);
+    texture->setSourceFormat(format);
+    texture->setSourceType(GL_FLOAT);
+    texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
+    texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
+    texture->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
+    texture->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_EDGE);
+    return texture;
+}
+
+osg::ref_ptr<osg::Texture2D> createDepthTarget(int width, int height)
+{
+    // Float depth: a layer's depth is compared with the depth its own fragments compute anew.
+    return createTarget(width, height, GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT);
+}
+
+osg::ref_ptr<osg::Texture2D> createColorTarget(int width, int height)
+{
+    return createTarget(width, height, GL_RGBA16F_ARB, GL_RGBA);
+}
+
+osg::ref_ptr<osg::FrameBufferObject> createFramebuffer(osg::Texture2D* depth, osg::Texture2D* color)
+{
+    osg::ref_ptr<osg::FrameBufferObject> framebuffer = new osg::FrameBufferObject;
+    if (depth)
+        framebuffer->setAttachment(osg::Camera::DEPTH_BUFFER, osg::FrameBufferAttachment(depth));
+    if (color)
+        framebuffer->setAttachment(osg::Camera::COLOR_BUFFER0, osg::FrameBufferAttachment(color));
+    return framebuffer;
+}
+
+/** Composition draws with the peeled drawables' StateSets still on OSG's stack: its own state
+ * is protected from their overrides. */
+osg::ref_ptr<osg::StateSet> createCompositionStateSet(osg::BlendFunc* blend, bool premultiply)
+{
+    const unsigned int ON = osg::StateAttribute::ON | osg::StateAttribute::PROTECTED;
+    const unsigned int OFF = osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED;
+    osg::ref_ptr<osg::StateSet> stateSet = new osg::StateSet;
+    stateSet->setAttributeAndModes(GlyphStateCache::instance()->getPeelingCompositeProgram(), ON);
+    stateSet->setAttributeAndModes(blend, ON);
+    stateSet->setAttribute(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false), ON);
+    stateSet->setMode(GL_DEPTH_TEST, OFF);
+    stateSet->setMode(GL_CULL_FACE, OFF);
+    stateSet->addUniform(new osg::Uniform("osgGlyphs_layer", static_cast<int>(LAYER_TEXTURE_UNIT)), ON);
+    stateSet->addUniform(new osg::Uniform("osgGlyphs_premultiply", premultiply ? 1.0f : 0.0f), ON);
+    return stateSet;
+}
+
+/** Clears and blits obey the write masks and the scissor: opens them, and lets OSG apply its own
+ * again afterwards. */
+void openWriteMasks(osg::State& state)
+{
+    glDepthMask(GL_TRUE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDisable(GL_SCISSOR_TEST);
+    state.haveAppliedAttribute(osg::StateAttribute::DEPTH);
+    state.haveAppliedAttribute(osg::StateAttribute::COLORMASK);
+    state.haveAppliedMode(GL_SCISSOR_TEST);
+}
+
+bool isEmpty(const osgUtil::RenderBin& bin)
+{
+    return bin.getStateGraphList().empty() && bin.getRenderLeafList().empty() &&
+           bin.getRenderBinList().empty();
+}
+
+}
+
+PeelingPasses::PeelingPasses()
+{
+    _passStateSet = new osg::StateSet;
+    _passStateSet->setName("osgGlyphs depth peeling");
+    _passStateSet->setRenderBinDetails(DepthPeeling::RENDER_BIN_NUMBER, "RenderBin",
+                                       osg::StateSet::OVERRIDE_RENDERBIN_DETAILS);
+    _passStateSet->setNestRenderBins(false);
+    _passStateSet->setDefine(GLYPH_DEPTH_PEEL_DEFINE);
+    _passStateSet->addUniform(
+        new osg::Uniform("osgGlyphs_peelDepth", static_cast<int>(DEPTH_PEEL_TEXTURE_UNIT)));
+    // Each pass keeps the nearest fragment per pixel; the composition blends.
+    _passStateSet->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    _passStateSet->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, true),
+                                        osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+
+    // Front to back: the accumulated colour C and alpha A take a layer (c, a) under them as
+    // C + (1 - A) a c and A + (1 - A) a; then over the target's colour T as C + (1 - A) T.
+    _underStateSet = createCompositionStateSet(
+        new osg::BlendFunc(osg::BlendFunc::ONE_MINUS_DST_ALPHA, osg::BlendFunc::ONE), true);
+    _overStateSet = createCompositionStateSet(
+        new osg::BlendFunc(osg::BlendFunc::ONE, osg::BlendFunc::ONE_MINUS_SRC_ALPHA), false);
+
+    _quad = osg::createTexturedQuadGeometry(osg::Vec3(-1.0f, -1.0f, 0.0f), osg::Vec3(2.0f, 0.0f, 0.0f),
+                                            osg::Vec3(0.0f, 2.0f, 0.0f));
+    _quad->setUseDisplayList(false);
+    _quad->setUseVertexBufferObjects(true);
+}
+
+void PeelingPasses::Targets::releaseGLObjects(osg::State* state) const
+{
+    for (const osg::Texture2D* texture :
+         {opaqueDepth.get(), layerDepth.get(), previousDepth.get(), layerColor.get(), accumulatedColor.get()})
+        if (texture)
+            texture->releaseGLObjects(state);
+    for (const osg::FrameBufferObject* framebuffer :
+         {opaque.get(), layer.get(), previous.get(), accumulated.get()})
+        if (framebuffer)
+            framebuffer->releaseGLObjects(state);
+}
+
+void PeelingPasses::resizeTargets(osg::State& state, int width, int height)
+{
+    _targets.releaseGLObjects(&state);
+    Targets& t = _targets;
+    t.width = width;
+    t.height = height;
+    t.opaqueDepth = createDepthTarget(width, height);
+    t.layerDepth = createDepthTarget(width, height);
+    t.previousDepth = createDepthTarget(width, height);
+    t.layerColor = createColorTarget(width, height);
+    t.accumulatedColor = createColorTarget(width, height);
+    t.opaque = createFramebuffer(t.opaqueDepth.get(), nullptr);
+    t.layer = createFramebuffer(t.layerDepth.get(), t.layerColor.get());
+    t.previous = createFramebuffer(t.previousDepth.get(), nullptr);
+    t.accumulated = createFramebuffer(nullptr, t.accumulatedColor.get());
+    _passStateSet->setTextureAttribute(DEPTH_PEEL_TEXTURE_UNIT, t.previousDepth.get());
+    const unsigned int PROTECTED = osg::StateAttribute::ON | osg::StateAttribute::PROTECTED;
+    _underStateSet->setTextureAttribute(LAYER_TEXTURE_UNIT, t.layerColor.get(), PROTECTED);
+    _overStateSet->setTextureAttribute(LAYER_TEXTURE_UNIT, t.accumulatedColor.get(), PROTECTED);
+}
+
+void PeelingPasses::compose(osg::RenderInfo& renderInfo, osg::StateSet* stateSet)
+{
+    osg::State& state = *renderInfo.getState();
+    state.apply(stateSet);
+    _quad->draw(renderInfo);
+    // Back to the state of the last drawable, which the next leaf of its StateGraph expects.
+    state.apply();
+}
+
+void PeelingPasses::drawImplementation(osgUtil::RenderBin* bin, osg::RenderInfo& renderInfo,
+                                       osgUtil::RenderLeaf*& previous)
+{
+    if (isEmpty(*bin))
+        return;
+    osg::State& state = *renderInfo.getState();
+    osg::GLExtensions* ext = state.get<osg::GLExtensions>();
+    if (!ext->isFrameBufferObjectSupported || !ext->glBlitFramebuffer)
+    {
+        bin->drawImplementation(renderInfo, previous);
+        return;
+    }
+
+    GLint targetDraw = 0, targetRead = 0, viewport[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &targetDraw);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &targetRead);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    const GLint x0 = viewport[0], y0 = viewport[1], x1 = viewport[0] + viewport[2],
+                y1 = viewport[1] + viewport[3];
+    if (viewport[2] <= 0 || viewport[3] <= 0)
+        return;
+    if (x1 != _targets.width || y1 != _targets.height)
+        resizeTargets(state, x1, y1);
+
+    openWriteMasks(state);
+    GLfloat clearColor[4];
+    GLfloat clearDepth = 1.0f;
+    glGetFloatv(GL_COLOR_CLEAR_VALUE, clearColor);
+    glGetFloatv(GL_DEPTH_CLEAR_VALUE, &clearDepth);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+
+    // Before the first layer nothing is peeled.
+    _targets.previous->apply(state, osg::FrameBufferObject::DRAW_FRAMEBUFFER);
+    glClearDepth(0.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glClearDepth(1.0);
+    ext->glBindFramebuffer(GL_DRAW_FRAMEBUFFER_EXT, targetDraw);
+
+    // The depth of what the stage drew, which hides the layers behind it. A copy rather than a
+    // blit: the target's depth format may differ. A multisampled target cannot be copied: the
+    // children are then drawn unsorted.
+    state.applyTextureAttribute(LAYER_TEXTURE_UNIT, _targets.opaqueDepth.get());
+    while (glGetError() != GL_NO_ERROR)
+    {
+    }
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, x0, y0, x0, y0, x1 - x0, y1 - y0);
+    if (glGetError() != GL_NO_ERROR)
+    {
+        glClearColor(clearColor[0], clearColor[1], clearColor[2], clearColor[3]);
+        glClearDepth(clearDepth);
+        bin->drawImplementation(renderInfo, previous);
+        return;
+    }
+    _targets.accumulated->apply(state, osg::FrameBufferObject::DRAW_FRAMEBUFFER);
+    glClear(GL_COLOR_BUFFER_BIT);
+
+    for (unsigned int layer = 0; layer < _numLayers; ++layer)
+    {
+        openWriteMasks(state);
+        _targets.opaque->apply(state, osg::FrameBufferObject::READ_FRAMEBUFFER);
+        _targets.layer->apply(state, osg::FrameBufferObject::DRAW_FRAMEBUFFER);
+        ext->glBlitFramebuffer(x0, y0, x1, y1, x0, y0, x1, y1, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        glClear(GL_COLOR_BUFFER_BIT);
+        // Read and draw: occlusion culling reads the pass's depth back.
+        _targets.layer->apply(state, osg::FrameBufferObject::READ_DRAW_FRAMEBUFFER);
+        bin->drawImplementation(renderInfo, previous);
+
+        if (layer + 1 < _numLayers)
+        {
+            openWriteMasks(state);
+            _targets.previous->apply(state, osg::FrameBufferObject::DRAW_FRAMEBUFFER);
+            ext->glBlitFramebuffer(x0, y0, x1, y1, x0, y0, x1, y1, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        }
+        _targets.accumulated->apply(state, osg::FrameBufferObject::READ_DRAW_FRAMEBUFFER);
+        compose(renderInfo, _underStateSet.get());
+    }
+
+    ext->glBindFramebuffer(GL_DRAW_FRAMEBUFFER_EXT, targetDraw);
+    ext->glBindFramebuffer(GL_READ_FRAMEBUFFER_EXT, targetRead);
+    compose(renderInfo, _overStateSet.get());
+    glClearColor(clearColor[0], clearColor[1], clearColor[2], clearColor[3]);
+    glClearDepth(clearDepth);
+}
+
+void PeelingPasses::releaseGLObjects(osg::State* state)
+{
+    _targets.releaseGLObjects(state);
+    _targets = Targets(); // made anew on the next draw
+    _passStateSet->releaseGLObjects(state);
+    _underStateSet->releaseGLObjects(state);
+    _overStateSet->releaseGLObjects(state);
+    _quad->releaseGLObjects(state);
+}

@@ -1,0 +1,219 @@
+// Depth peeling (osgGlyphs::DepthPeeling): transparent glyphs blend as the analytic "over"
+// operator of their surfaces sorted by depth, whatever the order of the arrays or children, with
+// opaque geometry outside the node hiding what lies behind it.
+//
+// The truth is composed from renders of each glyph alone, opaque: per pixel, the glyphs' lit
+// colours sorted by their depths, then c = a * c_i + (1 - a) * c over the background, back to
+// front. The peeled picture keeps its layers in half floats and the single renders are rounded
+// to 8 bits, so a channel may differ by COLOR_TOLERANCE.
+
+#include "GlyphTestScenes.h"
+
+#include <osgGlyphs/DepthPeeling>
+#include <osgGlyphs/GlyphCloud>
+
+#include <osg/Group>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace osgGlyphsTest;
+using osgGlyphs::DepthPeeling;
+using osgGlyphs::GlyphCloud;
+
+namespace
+{
+
+const int COLOR_TOLERANCE = 2;
+const osg::Vec4 BACKGROUND(0.2f, 0.3f, 0.4f, 1.0f);
+
+/** A render of one glyph, drawn alone and opaque, and the alpha it is blended with. */
+struct Surface
+{
+    Frame frame;
+    float alpha;
+};
+
+class DepthPeelingTest : public ::testing::Test
+{
+protected:
+    DepthPeelingTest() { renderer.setClearColor(BACKGROUND); }
+
+    /** The children under a peeling node. */
+    Frame renderPeeled(std::initializer_list<osg::Node*> transparent, osg::Node* opaque = nullptr)
+    {
+        osg::ref_ptr<osg::Group> root = new osg::Group;
+        if (opaque)
+            root->addChild(opaque);
+        osg::ref_ptr<DepthPeeling> peeling = new DepthPeeling;
+        for (osg::Node* child : transparent)
+            peeling->addChild(child);
+        root->addChild(peeling.get());
+        return renderer.render(root.get());
+    }
+
+    /** A node drawn alone and opaque. */
+    Surface renderAlone(osg::Node* node, float alpha) { return {renderer.render(node), alpha}; }
+
+    Renderer renderer{160, 120};
+};
+
+/** A sphere cloud of one lit sphere with an opacity. */
+osg::ref_ptr<GlyphCloud> sphere(const osg::Vec3& center, float radius, const osg::Vec4ub& color,
+                                float opacity)
+{
+    osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{center, radius, color}}, true);
+    cloud->setOpacity(opacity);
+    return cloud;
+}
+
+osg::Vec4 toVec4(const osg::Vec4ub& c)
+{
+    return osg::Vec4(c.r(), c.g(), c.b(), c.a()) / 255.0f;
+}
+
+/** The expected pixel: the surfaces that cover it, blended back to front over the background. */
+osg::Vec4 composeOver(const std::vector<Surface>& surfaces, int x, int y)
+{
+    std::vector<const Surface*> covering;
+    for (const Surface& surface : surfaces)
+        if (surface.frame.isCovered(x, y))
+            covering.push_back(&surface);
+    std::sort(covering.begin(), covering.end(),
+              [x, y](const Surface* a, const Surface* b)
+              { return a->frame.depthAt(x, y) > b->frame.depthAt(x, y); });
+    osg::Vec4 color = BACKGROUND;
+    for (const Surface* surface : covering)
+        color = toVec4(surface->frame.colorAt(x, y)) * surface->alpha + color * (1.0f - surface->alpha);
+    return color;
+}
+
+/** How many pixels differ from the composed truth by more than the tolerance; the pixels where
+ * two or more surfaces overlap are counted in overlaps. */
+int countMismatches(const Frame& frame, const std::vector<Surface>& surfaces, int& overlaps)
+{
+    int mismatches = 0;
+    overlaps = 0;
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x)
+        {
+            int covering = 0;
+            for (const Surface& surface : surfaces)
+                covering += surface.frame.isCovered(x, y) ? 1 : 0;
+            overlaps += covering >= 2 ? 1 : 0;
+            const osg::Vec4 expected = composeOver(surfaces, x, y) * 255.0f;
+            const osg::Vec4ub actual = frame.colorAt(x, y);
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(actual[c] - expected[c]) > COLOR_TOLERANCE + 0.5f)
+                {
+                    if (mismatches < 5)
+                        ADD_FAILURE() << "pixel (" << x << ", " << y << ") channel " << c << ": "
+                                      << int(actual[c]) << ", expected " << expected[c];
+                    ++mismatches;
+                    break;
+                }
+        }
+    return mismatches;
+}
+
+int countDifferentPixels(const Frame& a, const Frame& b)
+{
+    int different = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x)
+        {
+            const osg::Vec4ub ca = a.colorAt(x, y), cb = b.colorAt(x, y);
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(ca[c] - cb[c]) > 1)
+                {
+                    ++different;
+                    break;
+                }
+        }
+    return different;
+}
+
+const osg::Vec4ub RED(230, 40, 30, 255);
+const osg::Vec4ub GREEN(40, 220, 60, 255);
+const osg::Vec4ub WHITE(240, 240, 240, 255);
+
+}
+
+TEST_F(DepthPeelingTest, OverlappingSpheresBlendAsSortedInEitherArrayOrder)
+{
+    // The red sphere is nearer the eye (at y = -10) than the green one.
+    const SphereSpec nearSphere = {osg::Vec3(-0.5f, -1.0f, 0.2f), 1.3f, RED};
+    const SphereSpec farSphere = {osg::Vec3(0.6f, 1.0f, -0.1f), 1.5f, GREEN};
+    auto cloudOf = [](const std::vector<SphereSpec>& spheres)
+    {
+        osg::ref_ptr<GlyphCloud> cloud = createSphereCloud(spheres, true);
+        cloud->setOpacity(0.5f);
+        return cloud;
+    };
+    const Frame frontToBack = renderPeeled({cloudOf({nearSphere, farSphere}).get()});
+    const Frame backToFront = renderPeeled({cloudOf({farSphere, nearSphere}).get()});
+    saveFrame(frontToBack, "peeling_two_spheres");
+
+    EXPECT_EQ(countDifferentPixels(frontToBack, backToFront), 0);
+    const std::vector<Surface> surfaces = {renderAlone(createSphereCloud({nearSphere}, true).get(), 0.5f),
+                                           renderAlone(createSphereCloud({farSphere}, true).get(), 0.5f)};
+    int overlaps = 0;
+    EXPECT_EQ(countMismatches(frontToBack, surfaces, overlaps), 0);
+    EXPECT_GT(overlaps, 500);
+}
+
+TEST_F(DepthPeelingTest, OpaqueGeometryOutsideHidesTheGlyphsBehindIt)
+{
+    const SphereSpec wall = {osg::Vec3(0.0f, 0.0f, 0.0f), 2.0f, WHITE};
+    const SphereSpec behind = {osg::Vec3(-0.3f, 3.0f, 0.2f), 0.8f, RED};
+    const SphereSpec inFront = {osg::Vec3(0.8f, -3.0f, -0.2f), 0.5f, GREEN};
+    const Frame frame = renderPeeled({sphere(behind.center, behind.radius, behind.color, 0.5f).get(),
+                                      sphere(inFront.center, inFront.radius, inFront.color, 0.5f).get()},
+                                     createSphereCloud({wall}, true).get());
+    saveFrame(frame, "peeling_opaque_wall");
+
+    const std::vector<Surface> surfaces = {renderAlone(createSphereCloud({wall}, true).get(), 1.0f),
+                                           renderAlone(createSphereCloud({behind}, true).get(), 0.5f),
+                                           renderAlone(createSphereCloud({inFront}, true).get(), 0.5f)};
+    int overlaps = 0;
+    EXPECT_EQ(countMismatches(frame, surfaces, overlaps), 0);
+    EXPECT_GT(overlaps, 200);
+    // The opaque scene's depth stays in the depth buffer.
+    const osg::Vec3d centre = frame.project(osg::Vec3d(inFront.center));
+    EXPECT_TRUE(depthNear(frame, int(centre.x()), int(centre.y()),
+                          surfaces[0].frame.depthAt(int(centre.x()), int(centre.y())), 1.0e-6));
+}
+
+TEST_F(DepthPeelingTest, ConeThroughSpherePeelsInEitherChildOrder)
+{
+    const SphereSpec ball = {osg::Vec3(0.0f, 0.0f, 0.0f), 1.2f, GREEN};
+    auto cone = []
+    {
+        osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+        cloud->setShape(osgGlyphs::GlyphShape::Cone);
+        cloud->setPositions(makeArray<osg::Vec3Array>({osg::Vec3(0.0f, -0.6f, 0.0f)}));
+        // Across the view and slanted in depth: it enters the ball's front and leaves its back.
+        cloud->setVectors(makeArray<osg::Vec3Array>({osg::Vec3(3.5f, 2.0f, 0.4f)}));
+        cloud->setAnchor(osgGlyphs::GlyphAnchor::Center);
+        cloud->setRadius(0.5f);
+        cloud->setColor(toVec4(RED));
+        return cloud;
+    };
+    auto transparent = [](osg::ref_ptr<GlyphCloud> cloud)
+    {
+        cloud->setOpacity(0.5f);
+        return cloud;
+    };
+    const Frame coneFirst =
+        renderPeeled({transparent(cone()).get(), sphere(ball.center, ball.radius, ball.color, 0.5f).get()});
+    const Frame ballFirst =
+        renderPeeled({sphere(ball.center, ball.radius, ball.color, 0.5f).get(), transparent(cone()).get()});
+    saveFrame(coneFirst, "peeling_cone_through_sphere");
+
+    EXPECT_EQ(countDifferentPixels(coneFirst, ballFirst), 0);
+    const std::vector<Surface> surfaces = {renderAlone(cone().get(), 0.5f),
+                                           renderAlone(createSphereCloud({ball}, true).get(), 0.5f)};
+    int overlaps = 0;
+    EXPECT_EQ(countMismatches(coneFirst, surfaces, overlaps), 0);
+    EXPECT_GT(overlaps, 300);
+}
