@@ -6,6 +6,7 @@
 # CASE: random-sphere, random-cone (--random, split across ranks), dump-sphere, dump-cone (a
 # generated LAMMPS dump, each rank reading its share; colour by a column, default radius),
 # dump-species (labels met in another order by later ranks), dump-far (coordinates 1e6 from zero),
+# dump-frames (the second of two frames, each rank seeking to its part of each and past the rest),
 # csv-sphere (a generated CSV split by its bytes; default radius from every 3rd point),
 # empty-share (fewer atoms than ranks), bad-share (a malformed atom in the last rank's share:
 # every rank ends with that one error).
@@ -72,6 +73,9 @@ dump-cone) dump 2500 0 atoms.lammpstrj; compare "$case" atoms.lammpstrj --glyph 
 dump-species) dump 2500 0 atoms.lammpstrj 0 1; compare "$case" atoms.lammpstrj --color-by species ;;
 csv-sphere) csv 6000 points.csv; compare "$case" points.csv --color-by c ;;
 dump-far) dump 2500 0 atoms.lammpstrj 1000000; compare "$case" atoms.lammpstrj --glyph cone --color-by c ;;
+dump-frames)
+    dump 3000 0 first.lammpstrj; dump 2500 0 second.lammpstrj 0 1; cat first.lammpstrj second.lammpstrj > frames.lammpstrj
+    compare "$case" frames.lammpstrj --frame 1 --color-by species ;;
 empty-share)
     dump 2 0 two.lammpstrj
     "$viewer" two.lammpstrj --offscreen --output single.png > single.log

@@ -24,9 +24,11 @@ osg::ref_ptr<PointDataset> readShare(const std::string& text, const std::string&
     return dataset;
 }
 
-/** Column name of every frame, share after share, for count shares: equal to the whole reading. */
+/** Column name of every frame, share after share, for count shares: equal to the whole reading.
+ * With pointRanges, each share holds its getShareRange() of each frame's points; else (shares of
+ * a frame's bytes) any number of them. */
 void expectSharesMakeWhole(const std::string& text, const std::string& format, const std::string& name,
-                           unsigned int count)
+                           unsigned int count, bool pointRanges = true)
 {
     std::string error;
     osg::ref_ptr<PointDataset> whole = readString(text, format, error);
@@ -43,8 +45,9 @@ void expectSharesMakeWhole(const std::string& text, const std::string& format, c
             const std::vector<float> part = column(*share->getFrame(frame), name);
             const PointRange range =
                 getShareRange(PointShare{index, count}, whole->getFrame(frame)->getNumPoints());
-            EXPECT_EQ(part.size(), range.end - range.begin)
-                << format << " share " << index << " of " << count;
+            if (pointRanges)
+                EXPECT_EQ(part.size(), range.end - range.begin)
+                    << format << " share " << index << " of " << count;
             joined[frame].insert(joined[frame].end(), part.begin(), part.end());
         }
     }
@@ -103,13 +106,17 @@ TEST(PointShare, RefusesSharesThatAreNone)
     EXPECT_EQ(error, "random cloud: share 1 of 0: a dataset splits into at least 1 share");
 }
 
-TEST(PointShare, LammpsSharesAreRangesOfEachFrameAndKeepEveryFrame)
+TEST(PointShare, LammpsSharesAreTheRowsThatStartInTheirPartOfEachFrameAndKeepEveryFrame)
 {
-    for (unsigned int count = 1; count <= 4; ++count)
-        expectSharesMakeWhole(DUMP, "lammps", "x", count);
-    // Share 2 of 3 of the second frame's 2 atoms is empty: the frame stays, with its timestep.
-    osg::ref_ptr<PointDataset> share = readShare(DUMP, "lammps", PointShare{0, 3});
+    for (unsigned int count = 1; count <= 5; ++count)
+        expectSharesMakeWhole(DUMP, "lammps", "x", count, false);
+    // The first frame's 84 bytes of rows split at 28 and 56: share 2 of 3 holds the rows starting
+    // at 60 and 72. The second frame's 24 split at 8 and 16: share 2 holds none. The frame stays,
+    // with its timestep and box.
+    osg::ref_ptr<PointDataset> share = readShare(DUMP, "lammps", PointShare{2, 3});
     ASSERT_EQ(share->getNumFrames(), 2u);
+    EXPECT_EQ(column(*share->getFrame(0), "x"), (std::vector<float>{5.5f, 6.5f}));
+    EXPECT_EQ(share->getFrame(0)->getFilePointCount(), 7u);
     EXPECT_EQ(share->getFrame(1)->getNumPoints(), 0u);
     EXPECT_EQ(share->getFrame(1)->getTimestep(), 10);
     EXPECT_TRUE(share->getFrame(1)->hasBox());
@@ -129,9 +136,9 @@ TEST(PointShare, AMalformedRowFailsTheShareThatHoldsIt)
     EXPECT_TRUE(hasError(error, "dump.bad:15:", "oops")) << error;
 }
 
-TEST(PointShare, XyzAndVtkSharesAreRangesOfThePoints)
+TEST(PointShare, XyzSharesAreTheRowsThatStartInTheirPartOfEachFrameAndVtkSharesRangesOfThePoints)
 {
-    const std::string xyz = "5\nframe\nH 0 0 0\nO 1 0 0\nH 2 0 0\nC 3 0 0\nN 4 0 0\n"
+    const std::string xyz = "5\nframe\nH 0 0 0\nO 1 0 0\nH 2 0 0\nC 3 0 0\nN 4 0 0\n\n"
                             "3\nframe\nH 5 0 0\nO 6 0 0\nH 7 0 0\n";
     const std::string vtk =
         "# vtk DataFile Version 3.0\nshare\nASCII\nDATASET POLYDATA\nPOINTS 5 float\n"
@@ -139,8 +146,8 @@ TEST(PointShare, XyzAndVtkSharesAreRangesOfThePoints)
         "10 11 12 13 14\n";
     for (unsigned int count = 1; count <= 4; ++count)
     {
-        expectSharesMakeWhole(xyz, "xyz", "x", count);
-        expectSharesMakeWhole(xyz, "xyz", "element", count);
+        expectSharesMakeWhole(xyz, "xyz", "x", count, false);
+        expectSharesMakeWhole(xyz, "xyz", "element", count, false);
         expectSharesMakeWhole(vtk, "vtk", "x", count);
         expectSharesMakeWhole(vtk, "vtk", "t", count);
     }
@@ -295,5 +302,112 @@ TEST(PointShare, RandomSharesAreTheGlyphsOfTheWholeCloud)
         EXPECT_TRUE(positions == whole->getPositions()->asVector()) << count << " shares";
         EXPECT_TRUE(vectors == whole->getVectors()->asVector()) << count << " shares";
         EXPECT_TRUE(scalars == whole->getScalars()->asVector()) << count << " shares";
+    }
+}
+
+namespace
+{
+
+/** A LAMMPS dump of two frames of rows atoms whose rows grow longer as the ids gain digits. */
+std::string twoFrameDump(int rows)
+{
+    std::string dump;
+    for (int frame = 0; frame < 2; ++frame)
+    {
+        dump += "ITEM: TIMESTEP\n" + std::to_string(frame * 100) + "\nITEM: NUMBER OF ATOMS\n" +
+                std::to_string(rows) +
+                "\nITEM: BOX BOUNDS pp pp pp\n0 1\n0 1\n0 1\nITEM: ATOMS id type x y z\n";
+        for (int i = 1; i <= rows; ++i)
+            dump += std::to_string(i) + " " + std::to_string(1 + i % 3) + " 0." + std::to_string(i % 997) +
+                    " 0.25 -0.125\n";
+    }
+    return dump;
+}
+
+/** Extended XYZ of two frames of rows atoms, a blank line after each. */
+std::string twoFrameXyz(int rows)
+{
+    std::string xyz;
+    for (int frame = 0; frame < 2; ++frame)
+    {
+        xyz += std::to_string(rows) +
+               "\nProperties=species:S:1:pos:R:3:id:I:1 step=" + std::to_string(frame) + "\n";
+        for (int i = 1; i <= rows; ++i)
+            xyz += std::string(i % 5 == 0 ? "Na" : "O") + " 0." + std::to_string(i % 997) + " 1.5 -2 " +
+                   std::to_string(i) + "\n";
+        xyz += "\n";
+    }
+    return xyz;
+}
+
+/** A middle share of 4 reads its quarter of each frame, about a twentieth more to find the
+ * frame's end, and up to a block (1 MiB) past each of its 3 seeks. */
+void expectShareSeeks(const std::string& text, const std::string& format)
+{
+    const uint64_t bytes = bytesReadByShare(text, format, PointShare{1, 4});
+    EXPECT_LT(bytes, text.size() * 30 / 100 + 6 * (uint64_t(1) << 20))
+        << format << ": of " << text.size() << " bytes";
+}
+
+}
+
+TEST(PointShare, LammpsAndXyzSharesOfLargeFramesAreTheWholeFrames)
+{
+    // 300,000 rows a frame: past the first 64 KiB, each share estimates where the frame ends.
+    const std::string dump = twoFrameDump(300000), xyz = twoFrameXyz(300000);
+    for (unsigned int count = 2; count <= 4; ++count)
+    {
+        expectSharesMakeWhole(dump, "lammps", "id", count, false);
+        expectSharesMakeWhole(xyz, "xyz", "id", count, false);
+        expectSharesMakeWhole(xyz, "xyz", "element", count, false);
+    }
+}
+
+TEST(PointShare, LammpsAndXyzSharesSeekToTheirPartOfEachFrame)
+{
+    std::string dump = twoFrameDump(1000000);
+    expectShareSeeks(dump, "lammps");
+    expectShareSeeks(twoFrameXyz(1000000), "xyz");
+
+    // An error after three seeks still names the file's line: row 990,000 of the second frame.
+    dump.replace(dump.rfind("\n990000 ") + 1, 6, "oops00");
+    PointReadOptions options;
+    options.share = PointShare{3, 4};
+    std::vector<std::string> warnings;
+    std::string error;
+    EXPECT_FALSE(readWithOptions(dump, "lammps", options, warnings, error, "big.dump").valid());
+    EXPECT_TRUE(hasError(error, "big.dump:1990018:", "oops00")) << error;
+}
+
+TEST(PointShare, ALammpsFrameShorterThanItsCountEndsTheSharesAtItsNextItem)
+{
+    // The first frame says 9 atoms and has 7 rows: the shares end it at ITEM: TIMESTEP and read
+    // its 7 rows (unifyShares then tells the count is wrong); none reads the next frame's rows.
+    std::string dump = DUMP;
+    dump.replace(dump.find("ATOMS\n7\n"), 8, "ATOMS\n9\n");
+    for (unsigned int count = 1; count <= 3; ++count)
+    {
+        std::vector<float> joined;
+        for (unsigned int index = 0; index < count; ++index)
+        {
+            PointReadOptions options;
+            options.share = PointShare{index, count};
+            std::vector<std::string> warnings;
+            std::string error;
+            osg::ref_ptr<PointDataset> share = readWithOptions(dump, "lammps", options, warnings, error);
+            if (count == 1)
+            {
+                EXPECT_FALSE(share.valid());
+                EXPECT_TRUE(hasError(error, "", "'ITEM: TIMESTEP' after 7 of 9 rows")) << error;
+                continue;
+            }
+            ASSERT_TRUE(share.valid()) << error;
+            ASSERT_EQ(share->getNumFrames(), 2u);
+            EXPECT_EQ(share->getFrame(0)->getFilePointCount(), 9u);
+            const std::vector<float> part = column(*share->getFrame(0), "x");
+            joined.insert(joined.end(), part.begin(), part.end());
+        }
+        if (count > 1)
+            EXPECT_EQ(joined, (std::vector<float>{0.5f, 1.5f, 2.5f, 3.5f, 4.5f, 5.5f, 6.5f})) << count;
     }
 }

@@ -147,3 +147,28 @@ TEST(SharedDataset, AColumnBackToPlainValuesInOneShareIsInEvery)
         EXPECT_EQ(shares.values, *whole->getFrame(0)->getColumn("x")) << count << " shares";
     }
 }
+
+TEST(SharedDataset, SharesThatDoNotAddUpToTheFilesCountFailInEveryShare)
+{
+    // ITEM: NUMBER OF ATOMS says 5; the frame has 4 rows, and the file ends there.
+    const std::string dump = "ITEM: TIMESTEP\n40\nITEM: NUMBER OF ATOMS\n5\nITEM: BOX BOUNDS pp pp pp\n"
+                             "0 1\n0 1\n0 1\nITEM: ATOMS id x y z\n1 0 0 0\n2 1 0 0\n3 2 0 0\n4 3 0 0\n";
+    const unsigned int count = 3;
+    std::vector<std::string> errors(count);
+    runShares(count,
+              [&](const ShareReduction& reduction, unsigned int index)
+              {
+                  PointReadOptions options;
+                  options.share = reduction.getShare();
+                  std::vector<std::string> warnings;
+                  osg::ref_ptr<PointDataset> share =
+                      readWithOptions(dump, "lammps", options, warnings, errors[index], "short.dump");
+                  EXPECT_TRUE(share.valid()) << errors[index];
+                  if (share.valid())
+                      EXPECT_FALSE(unifyShares(*share, reduction, errors[index]));
+              });
+    for (const std::string& error : errors)
+        EXPECT_EQ(
+            error,
+            "short.dump: frame 1 (timestep 40): the file counts 5 points, its 3 shares read 4 together");
+}

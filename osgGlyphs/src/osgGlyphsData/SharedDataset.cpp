@@ -95,12 +95,35 @@ bool unifyLabels(PointData& frame, const ShareReduction& reduction, std::string&
     return true;
 }
 
+/** Whether the shares of a frame whose file states its points hold them all, once. */
+bool checkPointCount(const PointData& frame, std::size_t index, const ShareReduction& reduction,
+                     std::string& error)
+{
+    std::vector<double> counts = {static_cast<double>(frame.getNumPoints()),
+                                  static_cast<double>(frame.getFilePointCount())};
+    reduction.sum(counts);
+    const double shares = static_cast<double>(reduction.getShare().count);
+    if (frame.getFilePointCount() == 0 ||
+        counts[1] != shares * static_cast<double>(frame.getFilePointCount()) ||
+        counts[0] == counts[1] / shares)
+        return true;
+    error = frame.getSource() + ": frame " + std::to_string(index + 1) + " (timestep " +
+            std::to_string(frame.getTimestep()) + "): the file counts " +
+            std::to_string(frame.getFilePointCount()) + " points, its " +
+            std::to_string(reduction.getShare().count) + " shares read " +
+            std::to_string(static_cast<uint64_t>(counts[0])) + " together";
+    return false;
+}
+
 }
 
 bool osgGlyphsData::unifyShares(PointDataset& dataset, const ShareReduction& reduction, std::string& error)
 {
-    for (const osg::ref_ptr<PointData>& frame : dataset.getFrames())
+    for (std::size_t index = 0; index < dataset.getFrames().size(); ++index)
     {
+        const osg::ref_ptr<PointData>& frame = dataset.getFrames()[index];
+        if (!checkPointCount(*frame, index, reduction, error))
+            return false;
         unifyOrigins(*frame, reduction);
         if (!unifyLabels(*frame, reduction, error))
             return false;

@@ -25,6 +25,7 @@ void FrameList::add(PointData* frame, uint64_t firstLine, uint64_t filePoints)
     _dataset.setEndOfCompleteFrames({_scanner.getOffset(), _scanner.getLineNumber(), _fileFrame});
     if (filePoints > 0)
     {
+        frame->setFilePointCount(filePoints);
         _dataset.addFrame(frame);
         return;
     }

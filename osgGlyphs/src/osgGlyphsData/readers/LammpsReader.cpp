@@ -4,6 +4,7 @@
 #include "Fields.h"
 #include "FrameList.h"
 #include "Readers.h"
+#include "RowShare.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +14,11 @@ using namespace osgGlyphsData::readers;
 
 namespace
 {
+
+bool isItemLine(std::string_view line)
+{
+    return startsWith(trim(line), "ITEM:");
+}
 
 // What the items before ITEM: ATOMS said about the coming frame.
 struct FrameHeader
@@ -120,11 +126,20 @@ osg::ref_ptr<PointData> readAtoms(TextScanner& scanner, std::string_view names, 
                                "ITEM: ATOMS names no columns, and the rows have neither 5 nor 8 fields");
     }
 
-    ColumnTable table(scanner, share);
-    table.setRowCount(header.count);
+    const bool byBytes = sharesRowsByBytes(scanner, share, header.count);
+    ColumnTable table(scanner, byBytes ? PointShare() : share);
+    if (!byBytes)
+        table.setRowCount(header.count);
     for (const std::string& name : columns)
         table.addColumn(name, name == "element" ? ColumnTable::Species : ColumnTable::Number);
     const uint64_t minBytes = 2 * std::max<uint64_t>(columns.size(), 1);
+    if (byBytes)
+    {
+        const uint64_t body = legacy ? scanner.getLineOffset() : scanner.getOffset();
+        readShareOfRows(scanner, table, body, header.count, minBytes, share, isItemLine, "ITEM: ATOMS",
+                        legacy ? std::optional<std::string>(first) : std::nullopt);
+        return table.finish();
+    }
     // What is reserved, the rest of the file can hold. A larger count fails where the rows end,
     // in a file as in a pipe: a last frame cut short, or a row that does not fit the columns.
     table.reserve(scanner.boundedReserve(header.count, minBytes));

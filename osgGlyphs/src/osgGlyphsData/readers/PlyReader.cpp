@@ -421,5 +421,7 @@ void osgGlyphsData::readers::readPly(TextScanner& scanner, PointDataset& dataset
     }
     if (table.getNumColumns() == 0)
         table.addEmptyRows(vertex->count);
-    addOnlyFrame(scanner, dataset, options, table.finish().get());
+    osg::ref_ptr<PointData> frame = table.finish();
+    frame->setFilePointCount(vertex->count);
+    addOnlyFrame(scanner, dataset, options, frame.get());
 }

@@ -7,6 +7,19 @@
 
 using namespace osgGlyphsData::readers;
 
+namespace
+{
+
+std::string_view trimLineEnd(const std::string& line)
+{
+    std::string_view text(line);
+    if (!text.empty() && text.back() == '\r')
+        text.remove_suffix(1);
+    return text;
+}
+
+}
+
 TextScanner::TextScanner(std::istream& in, const std::string& name, uint64_t totalBytes,
                          const Progress& progress, uint64_t startOffset, uint64_t startLine)
     : _in(in), _name(name), _totalBytes(totalBytes), _progress(progress),
@@ -165,8 +178,7 @@ void TextScanner::skipToLineStart(uint64_t offset)
     if (offset <= from)
         return;
     std::string_view line;
-    if (offset - 1 < _bufferOffset + _end || _streamStart < 0 || _jump.to > _jump.from ||
-        !seekStream(offset - 1))
+    if (offset - 1 < _bufferOffset + _end || _streamStart < 0 || !seekStream(offset - 1))
     {
         while (getOffset() < offset && nextLine(line))
         {
@@ -177,7 +189,7 @@ void TextScanner::skipToLineStart(uint64_t offset)
     const uint64_t linesBefore = _lineNumber;
     nextLine(line);
     _lineNumber = linesBefore;
-    _jump = Jump{from, getOffset(), linesBefore};
+    _jumps.push_back(Jump{from, getOffset(), linesBefore});
 }
 
 bool TextScanner::seekStream(uint64_t offset)
@@ -196,23 +208,98 @@ bool TextScanner::seekStream(uint64_t offset)
 
 uint64_t TextScanner::getFileLine(uint64_t line) const
 {
-    if (_jump.to == _jump.from || line <= _jump.linesBefore)
-        return line;
     // Counted only now: a failure ends the reading, so the stream may move.
-    _in.clear();
-    _in.seekg(static_cast<std::streamoff>(_streamStart + (_jump.from - _startOffset)));
-    std::vector<char> block(BlockSize);
-    uint64_t left = _jump.to - _jump.from;
-    while (left > 0 && _in)
+    uint64_t jumped = 0;
+    std::vector<char> block;
+    for (const Jump& jump : _jumps)
     {
-        _in.read(block.data(), static_cast<std::streamsize>(std::min<uint64_t>(left, block.size())));
+        if (line <= jump.linesBefore)
+            break;
+        block.resize(BlockSize);
+        _in.clear();
+        _in.seekg(static_cast<std::streamoff>(_streamStart + (jump.from - _startOffset)));
+        uint64_t left = jump.to - jump.from;
+        while (left > 0 && _in)
+        {
+            _in.read(block.data(), static_cast<std::streamsize>(std::min<uint64_t>(left, block.size())));
+            const std::size_t count = static_cast<std::size_t>(_in.gcount());
+            if (count == 0)
+                break;
+            jumped += static_cast<uint64_t>(std::count(block.data(), block.data() + count, '\n'));
+            left -= count;
+        }
+    }
+    return line + jumped;
+}
+
+std::string TextScanner::readAt(uint64_t offset, std::size_t size)
+{
+    const uint64_t end = getEndOffset();
+    if (!canSeek() || offset >= end)
+        return std::string();
+    std::string bytes(static_cast<std::size_t>(std::min<uint64_t>(size, end - offset)), '\0');
+    _in.clear();
+    const std::streampos resume = _in.tellg();
+    _in.seekg(static_cast<std::streamoff>(_streamStart + (offset - _startOffset)));
+    _in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    bytes.resize(static_cast<std::size_t>(_in.gcount()));
+    _bytesRead += bytes.size();
+    _in.clear();
+    _in.seekg(resume);
+    return bytes;
+}
+
+uint64_t TextScanner::findLine(uint64_t offset, const LineTest& test)
+{
+    const uint64_t end = getEndOffset();
+    if (!canSeek() || offset >= end)
+        return end;
+    _in.clear();
+    const std::streampos resume = _in.tellg();
+    // From the byte before offset, which tells whether a line starts at offset.
+    const uint64_t first = offset > _startOffset ? offset - 1 : offset;
+    _in.seekg(static_cast<std::streamoff>(_streamStart + (first - _startOffset)));
+    std::vector<char> block(BlockSize);
+    std::string line; // the part of a line that began in an earlier block
+    uint64_t blockOffset = first, lineOffset = offset, found = end;
+    bool inLine = first == offset; // within a line that starts at or after offset
+    while (found == end && _in)
+    {
+        _in.read(block.data(), static_cast<std::streamsize>(block.size()));
         const std::size_t count = static_cast<std::size_t>(_in.gcount());
+        _bytesRead += count;
+        std::size_t begin = 0;
+        if (blockOffset < offset && count > 0)
+        {
+            inLine = block[0] == '\n';
+            begin = 1;
+        }
+        while (begin < count && found == end)
+        {
+            const char* newline =
+                static_cast<const char*>(std::memchr(block.data() + begin, '\n', count - begin));
+            const std::size_t stop = newline ? static_cast<std::size_t>(newline - block.data()) : count;
+            if (inLine)
+                line.append(block.data() + begin, stop - begin);
+            if (!newline)
+                break;
+            if (inLine && test(trimLineEnd(line)))
+                found = lineOffset;
+            line.clear();
+            inLine = true;
+            begin = stop + 1;
+            lineOffset = blockOffset + begin;
+        }
+        blockOffset += count;
         if (count == 0)
             break;
-        line += static_cast<uint64_t>(std::count(block.data(), block.data() + count, '\n'));
-        left -= count;
     }
-    return line;
+    // The last line, without an end.
+    if (found == end && inLine && !line.empty() && test(trimLineEnd(line)))
+        found = lineOffset;
+    _in.clear();
+    _in.seekg(resume);
+    return found;
 }
 
 void TextScanner::failAtLine(uint64_t line, const std::string& what) const

@@ -104,6 +104,21 @@ public:
      * another stream reads the lines on the way. Line numbers stay the file's either way. */
     void skipToLineStart(uint64_t offset);
 
+    /** True when the stream can seek and tells its size: skipToLineStart() and findLine() seek. */
+    bool canSeek() const { return _streamStart >= 0 && _totalBytes > 0; }
+
+    /** Up to size bytes from offset (a byte offset of the file), read there and back without
+     * moving the scanner: for a stream that canSeek(). The bytes count as read. */
+    std::string readAt(uint64_t offset, std::size_t size);
+
+    /** Tells a line (without its end) that findLine() looks for. */
+    typedef std::function<bool(std::string_view line)> LineTest;
+
+    /** The offset of the first line that starts at or after offset (a byte offset of the file)
+     * and passes test; getEndOffset() when no line does. Reads the stream there and back, without
+     * moving the scanner: for a stream that canSeek(). The bytes it reads count as read. */
+    uint64_t findLine(uint64_t offset, const LineTest& test);
+
     /** The offset of the file's end: where the stream started plus its size; 0 when unknown. */
     uint64_t getEndOffset() const { return _totalBytes > 0 ? _startOffset + _totalBytes : 0; }
 
@@ -149,7 +164,8 @@ private:
         uint64_t from = 0;
         uint64_t to = 0;
         uint64_t linesBefore = 0;
-    } _jump;
+    };
+    std::vector<Jump> _jumps;
 };
 
 } // namespace readers

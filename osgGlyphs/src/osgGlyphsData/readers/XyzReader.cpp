@@ -4,6 +4,7 @@
 #include "Fields.h"
 #include "FrameList.h"
 #include "Readers.h"
+#include "RowShare.h"
 
 #include <algorithm>
 #include <cmath>
@@ -136,6 +137,13 @@ bool parseLattice(TextScanner& scanner, const std::string& lattice, osg::Boundin
     return true;
 }
 
+/** Whether a line follows a frame's atoms: blank, or the next frame's count (atoms have 3 or more
+ * fields). */
+bool isFrameStart(std::string_view line)
+{
+    return countFields(line) <= 1;
+}
+
 osg::ref_ptr<PointData> readFrame(TextScanner& scanner, uint64_t count, uint64_t frameIndex,
                                   const PointShare& share)
 {
@@ -146,8 +154,10 @@ osg::ref_ptr<PointData> readFrame(TextScanner& scanner, uint64_t count, uint64_t
     const KeyValue* lattice = findKey(pairs, "lattice");
     const bool hasBox = lattice && parseLattice(scanner, lattice->value, box, tilt);
 
-    ColumnTable table(scanner, share);
-    table.setRowCount(count);
+    const bool byBytes = sharesRowsByBytes(scanner, share, count);
+    ColumnTable table(scanner, byBytes ? PointShare() : share);
+    if (!byBytes)
+        table.setRowCount(count);
     std::string_view first;
     bool hasFirst = false;
     const KeyValue* properties = findKey(pairs, "properties");
@@ -173,12 +183,21 @@ osg::ref_ptr<PointData> readFrame(TextScanner& scanner, uint64_t count, uint64_t
 
     const uint64_t minBytes = 2 * std::max<uint64_t>(table.getNumColumns(), 1);
     const std::string section = "frame " + std::to_string(frameIndex + 1);
-    // What is reserved, the rest of the file can hold. A larger count fails where the rows end,
-    // in a file as in a pipe: a last frame cut short, or a row that does not fit the columns.
-    table.reserve(scanner.boundedReserve(count, minBytes));
-    if (hasFirst)
-        table.appendRow(first);
-    table.readRows(hasFirst ? 1 : 0, count, section);
+    if (byBytes)
+    {
+        const uint64_t body = hasFirst ? scanner.getLineOffset() : scanner.getOffset();
+        readShareOfRows(scanner, table, body, count, minBytes, share, isFrameStart, section,
+                        hasFirst ? std::optional<std::string>(first) : std::nullopt);
+    }
+    else
+    {
+        // What is reserved, the rest of the file can hold. A larger count fails where the rows
+        // end, in a file as in a pipe: a last frame cut short, or a row that does not fit.
+        table.reserve(scanner.boundedReserve(count, minBytes));
+        if (hasFirst)
+            table.appendRow(first);
+        table.readRows(hasFirst ? 1 : 0, count, section);
+    }
 
     osg::ref_ptr<PointData> frame = table.finish();
     frame->setTimestep(static_cast<int64_t>(frameIndex));
