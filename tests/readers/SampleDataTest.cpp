@@ -2,6 +2,8 @@
 
 #include "ReaderTestUtil.h"
 
+#include <algorithm>
+
 #include <osgGlyphsData/Elements>
 
 using namespace osgGlyphsData;
@@ -44,6 +46,22 @@ TEST(SampleData, LammpsDumpHasThreeTimestepsOf500Atoms)
         expectPositions(frame);
     }
     EXPECT_EQ((*dataset->getFrame(2)->getColumn("id"))[499], 500.0f);
+}
+
+TEST(SampleData, TheLammpsMeltHasThreeTimestepsOf4000AtomsWithACoreOfType2)
+{
+    osg::ref_ptr<PointDataset> dataset = readSample("melt4k.lammpstrj");
+    ASSERT_EQ(dataset->getNumFrames(), 3u);
+    for (std::size_t i = 0; i < 3; ++i)
+    {
+        const PointData& frame = *dataset->getFrame(i);
+        EXPECT_EQ(frame.getTimestep(), static_cast<int64_t>(50 * i));
+        EXPECT_EQ(frame.getNumPoints(), 4000u);
+        EXPECT_TRUE(frame.hasBox());
+        expectPositions(frame);
+        const std::vector<float>& types = *frame.getColumn("type");
+        EXPECT_EQ(std::count(types.begin(), types.end(), 2.0f), 249);
+    }
 }
 
 TEST(SampleData, ExtendedXyzHasTwoFramesOfWater)
