@@ -1,9 +1,11 @@
-// GlyphCloud through OSG's native formats: every attribute survives .osgt, .osgb and .osgx
-// bit for bit, and the read scene renders the same pixels.
+// GlyphCloud, ScreenEffects and DepthPeeling through OSG's native formats: every attribute
+// survives .osgt, .osgb and .osgx bit for bit, and the read scene renders the same pixels.
 
 #include "GlyphTestScenes.h"
 
+#include <osgGlyphs/DepthPeeling>
 #include <osgGlyphs/GlyphCloud>
+#include <osgGlyphs/ScreenEffects>
 #include <osgGlyphsPaper/Techniques>
 
 #include <osgDB/ReadFile>
@@ -151,6 +153,81 @@ TEST(NativeFormatDefaults, DefaultCloudRoundTrips)
     ASSERT_TRUE(copy.valid());
     expectSameCloud(*original, *copy);
     EXPECT_TRUE(copy->getScalarRangeIsAutomatic());
+}
+
+namespace
+{
+
+/** Spheres of a cloud at an opacity, drawn by the default technique. */
+osg::ref_ptr<osg::Geode> sphereCloud(float x, float opacity)
+{
+    osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+    cloud->setPositions(makeArray<osg::Vec3Array>(
+        {osg::Vec3(x - 0.5f, 0.0f, 0.0f), osg::Vec3(x, 0.2f, -0.3f), osg::Vec3(x + 0.4f, -0.3f, 0.4f)}));
+    cloud->setRadii(makeArray<osg::FloatArray>({0.45f, 0.5f, 0.35f}));
+    cloud->setScalars(makeArray<osg::FloatArray>({0.0f, 0.5f, 1.0f}));
+    cloud->setOpacity(opacity);
+    return group({cloud.get()});
+}
+
+}
+
+TEST_P(NativeFormats, ScreenEffectsAndDepthPeelingRoundTrip)
+{
+    // Outlined, occluded opaque spheres on the left; transparent ones peeled on the right.
+    osg::ref_ptr<osgGlyphs::ScreenEffects> effects = new osgGlyphs::ScreenEffects;
+    effects->setAmbientOcclusion(true);
+    effects->setOcclusionRadius(0.3f);
+    effects->setOcclusionStrength(0.7f);
+    effects->setOcclusionSamples(24);
+    effects->setOutlines(true);
+    effects->setOutlineWidth(2.5f);
+    effects->setOutlineColor(osg::Vec4(0.2f, 0.0f, 0.1f, 0.9f));
+    effects->addChild(sphereCloud(-0.7f, 1.0f).get());
+    osg::ref_ptr<osgGlyphs::DepthPeeling> peeling = new osgGlyphs::DepthPeeling;
+    peeling->setNumLayers(3);
+    peeling->addChild(sphereCloud(0.7f, 0.5f).get());
+    osg::ref_ptr<osg::Group> scene = new osg::Group;
+    scene->addChild(effects.get());
+    scene->addChild(peeling.get());
+    const std::string path = outputPath("effects." + GetParam());
+    ASSERT_TRUE(osgDB::writeNodeFile(*scene, path)) << path;
+
+    osg::ref_ptr<osg::Node> read = osgDB::readRefNodeFile(path);
+    ASSERT_TRUE(read.valid() && read->asGroup() && read->asGroup()->getNumChildren() == 2u) << path;
+    const auto* readEffects = dynamic_cast<const osgGlyphs::ScreenEffects*>(read->asGroup()->getChild(0));
+    const auto* readPeeling = dynamic_cast<const osgGlyphs::DepthPeeling*>(read->asGroup()->getChild(1));
+    ASSERT_NE(readEffects, nullptr);
+    ASSERT_NE(readPeeling, nullptr);
+    EXPECT_EQ(readEffects->getAmbientOcclusion(), true);
+    EXPECT_EQ(readEffects->getOcclusionRadius(), 0.3f);
+    EXPECT_EQ(readEffects->getOcclusionStrength(), 0.7f);
+    EXPECT_EQ(readEffects->getOcclusionSamples(), 24u);
+    EXPECT_EQ(readEffects->getOutlines(), true);
+    EXPECT_EQ(readEffects->getOutlineWidth(), 2.5f);
+    EXPECT_EQ(readEffects->getOutlineColor(), osg::Vec4(0.2f, 0.0f, 0.1f, 0.9f));
+    EXPECT_EQ(readEffects->getNumChildren(), 1u);
+    EXPECT_EQ(readPeeling->getNumLayers(), 3u);
+    EXPECT_EQ(readPeeling->getEnabled(), true);
+    EXPECT_EQ(readPeeling->getNumChildren(), 1u);
+
+    // The same picture, and not the one without the effects and the peeling.
+    Renderer renderer(160, 120);
+    const Frame expected = renderer.render(scene.get());
+    const Frame actual = renderer.render(read.get());
+    effects->setOutlines(false);
+    effects->setAmbientOcclusion(false);
+    peeling->setEnabled(false);
+    const Frame plain = renderer.render(scene.get());
+    int differing = 0, changed = 0;
+    for (int y = 0; y < expected.height(); ++y)
+        for (int x = 0; x < expected.width(); ++x)
+        {
+            differing += expected.colorAt(x, y) != actual.colorAt(x, y) ? 1 : 0;
+            changed += expected.colorAt(x, y) != plain.colorAt(x, y) ? 1 : 0;
+        }
+    EXPECT_EQ(differing, 0);
+    EXPECT_GT(changed, 200);
 }
 
 INSTANTIATE_TEST_SUITE_P(, NativeFormats, ::testing::Values("osgt", "osgb", "osgx"),
