@@ -2,6 +2,7 @@
 
 #include <osgGlyphs/GlyphStateCache>
 
+#include <osg/BlendFunc>
 #include <osg/Geode>
 
 #include <algorithm>
@@ -150,6 +151,9 @@ ScreenPass::ScreenPass(osg::Group& content)
         stateSet->addUniform(new osg::Uniform("osgGlyphs_effectsColor", int(COLOR_UNIT)));
         stateSet->addUniform(new osg::Uniform("osgGlyphs_effectsDepth", int(DEPTH_UNIT)));
     }
+    // The children's colour is premultiplied by its alpha, their coverage: transparent children
+    // (DepthPeeling) blend over what the view drew outside the node.
+    _composite->setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA));
     _composite->setTextureAttribute(OCCLUSION_UNIT, _occlusion.get());
     _composite->addUniform(new osg::Uniform("osgGlyphs_effectsOcclusion", int(OCCLUSION_UNIT)));
 }
