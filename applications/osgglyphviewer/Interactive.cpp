@@ -53,7 +53,7 @@ void describeViewerKeys(osg::ApplicationUsage& usage)
     // The viewer's keys last: they replace the standard description of l.
     osg::ref_ptr<ViewerEventHandler> keys = new ViewerEventHandler(nullptr);
     keys->getUsage(usage);
-    osg::ref_ptr<ScreenEffectsKeys> effectKeys = new ScreenEffectsKeys(nullptr, nullptr);
+    osg::ref_ptr<ScreenEffectsKeys> effectKeys = new ScreenEffectsKeys(nullptr);
     effectKeys->getUsage(usage);
 }
 
@@ -86,7 +86,7 @@ int runInteractive(ViewerScene& scene, const ViewerOptions& options, osg::Applic
     keys->setPickText(pickText);
     for (const auto& handler : createHandlers(keys.get(), camera->getOrCreateStateSet(), usage))
         viewer->addEventHandler(handler.get());
-    viewer->addEventHandler(new ScreenEffectsKeys(scene.getScreenEffects(), scene.getTransparency()));
+    viewer->addEventHandler(new ScreenEffectsKeys(scene.getScreenEffects()));
 
     const CameraView home = options.hasCamera ? options.camera : scene.getHomeView(options.fov, aspect);
     setProjectionForView(*camera, options.fov, aspect, home);

@@ -93,14 +93,6 @@ bool ScreenEffectsKeys::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActio
 {
     if (ea.getHandled() || ea.getEventType() != osgGA::GUIEventAdapter::KEYDOWN)
         return false;
-    const bool turningOn = (ea.getKey() == 'a' && !_effects->getAmbientOcclusion()) ||
-                           (ea.getKey() == 'e' && !_effects->getOutlines());
-    if (turningOn && _transparency->isOn())
-    {
-        std::cout << PROGRAM << ": screen-space occlusion and outlines do not combine with transparency yet "
-                  << "(key x)" << std::endl;
-        return true;
-    }
     if (ea.getKey() == 'a')
     {
         _effects->setAmbientOcclusion(!_effects->getAmbientOcclusion());

@@ -3,7 +3,6 @@
 #ifndef OSGGLYPHVIEWER_SCREENEFFECTSOPTIONS_H
 #define OSGGLYPHVIEWER_SCREENEFFECTSOPTIONS_H 1
 
-#include "Transparency.h"
 
 #include <osgGlyphs/ScreenEffects>
 
@@ -47,10 +46,7 @@ void applyScreenEffectsOptions(ViewerScene& scene, const ScreenEffectsOptions& o
 class ScreenEffectsKeys : public osgGA::GUIEventHandler
 {
 public:
-    ScreenEffectsKeys(osgGlyphs::ScreenEffects* effects, const Transparency* transparency)
-        : _effects(effects), _transparency(transparency)
-    {
-    }
+    explicit ScreenEffectsKeys(osgGlyphs::ScreenEffects* effects) : _effects(effects) {}
 
     bool handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter& aa) override;
     void getUsage(osg::ApplicationUsage& usage) const override;
@@ -59,7 +55,6 @@ protected:
     ~ScreenEffectsKeys() override = default;
 
     osg::ref_ptr<osgGlyphs::ScreenEffects> _effects;
-    osg::ref_ptr<const Transparency> _transparency; // the effects refuse to turn on while it is on
 };
 
 #endif

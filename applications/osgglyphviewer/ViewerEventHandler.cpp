@@ -54,13 +54,6 @@ bool ViewerEventHandler::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActi
     case 'x':
     {
         Transparency* transparency = _scene->getTransparency();
-        const osgGlyphs::ScreenEffects* effects = _scene->getScreenEffects();
-        if (!transparency->isOn() && (effects->getAmbientOcclusion() || effects->getOutlines()))
-        {
-            std::cout << PROGRAM << ": transparency does not combine with screen-space occlusion or "
-                      << "outlines yet (keys a, e)" << std::endl;
-            return true;
-        }
         transparency->setOn(!transparency->isOn());
         std::cout << PROGRAM << ": transparency "
                   << (transparency->isOn() ? "at opacity " + std::to_string(transparency->getOpacity())

@@ -168,14 +168,6 @@ bool readViewOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std
     if (!readScreenEffectsOptions(arguments, options.effects, options.ambientOcclusion, error) ||
         !readTransparencyOptions(arguments, options.transparency, error))
         return false;
-    const bool screenEffects =
-        options.effects.outlines ||
-        (options.ambientOcclusion && options.effects.aoMode != AmbientOcclusionMode::Glyph);
-    if (options.transparency.on && screenEffects)
-    {
-        error = "--opacity does not combine with --outline or a screen-space --ao-mode yet";
-        return false;
-    }
     float r = 0.0f, g = 0.0f, b = 0.0f;
     if (arguments.read("--background", r, g, b))
     {

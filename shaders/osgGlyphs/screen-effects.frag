@@ -194,7 +194,9 @@ void main()
     color.rgb *= mix(1.0, blurredAmbientLight(pixel, p.z), osgGlyphs_occlusionStrength);
 #endif
 #ifdef OSGGLYPHS_SCREEN_OUTLINES
-    color.rgb = mix(color.rgb, osgGlyphs_outlineColor.rgb * color.a, osgGlyphs_outlineColor.a * outline(pixel, depth, p));
+    // Over the pixel, which may be transparent (premultiplied): an outline covers what is behind.
+    float cover = osgGlyphs_outlineColor.a * outline(pixel, depth, p);
+    color = vec4(osgGlyphs_outlineColor.rgb * cover, cover) + color * (1.0 - cover);
 #endif
     vec4 clip = gl_ProjectionMatrix * vec4(p, 1.0);
     gl_FragDepth = 0.5 * (gl_DepthRange.diff * clip.z / clip.w + gl_DepthRange.near + gl_DepthRange.far);

@@ -11,6 +11,7 @@
 
 #include <osgGlyphs/DepthPeeling>
 #include <osgGlyphs/GlyphCloud>
+#include <osgGlyphs/ScreenEffects>
 
 #include <osg/Group>
 
@@ -90,7 +91,8 @@ osg::Vec4 composeOver(const std::vector<Surface>& surfaces, int x, int y)
 
 /** How many pixels differ from the composed truth by more than the tolerance; the pixels where
  * two or more surfaces overlap are counted in overlaps. */
-int countMismatches(const Frame& frame, const std::vector<Surface>& surfaces, int& overlaps)
+int countMismatches(const Frame& frame, const std::vector<Surface>& surfaces, int& overlaps,
+                    int tolerance = COLOR_TOLERANCE)
 {
     int mismatches = 0;
     overlaps = 0;
@@ -104,7 +106,7 @@ int countMismatches(const Frame& frame, const std::vector<Surface>& surfaces, in
             const osg::Vec4 expected = composeOver(surfaces, x, y) * 255.0f;
             const osg::Vec4ub actual = frame.colorAt(x, y);
             for (int c = 0; c < 3; ++c)
-                if (std::abs(actual[c] - expected[c]) > COLOR_TOLERANCE + 0.5f)
+                if (std::abs(actual[c] - expected[c]) > tolerance + 0.5f)
                 {
                     if (mismatches < 5)
                         ADD_FAILURE() << "pixel (" << x << ", " << y << ") channel " << c << ": "
@@ -178,10 +180,14 @@ TEST_F(DepthPeelingTest, OpaqueGeometryOutsideHidesTheGlyphsBehindIt)
     int overlaps = 0;
     EXPECT_EQ(countMismatches(frame, surfaces, overlaps), 0);
     EXPECT_GT(overlaps, 200);
-    // The opaque scene's depth stays in the depth buffer.
-    const osg::Vec3d centre = frame.project(osg::Vec3d(inFront.center));
-    EXPECT_TRUE(depthNear(frame, int(centre.x()), int(centre.y()),
-                          surfaces[0].frame.depthAt(int(centre.x()), int(centre.y())), 1.0e-6));
+    // The depth buffer gets the nearest layer's depth: the transparent sphere's in front of the
+    // wall, the wall's where the transparent one behind it is hidden.
+    const osg::Vec3d front = frame.project(osg::Vec3d(inFront.center));
+    EXPECT_TRUE(depthNear(frame, int(front.x()), int(front.y()),
+                          surfaces[2].frame.depthAt(int(front.x()), int(front.y())), 1.0e-6));
+    const osg::Vec3d hidden = frame.project(osg::Vec3d(behind.center));
+    EXPECT_TRUE(depthNear(frame, int(hidden.x()), int(hidden.y()),
+                          surfaces[0].frame.depthAt(int(hidden.x()), int(hidden.y())), 1.0e-6));
 }
 
 TEST_F(DepthPeelingTest, ConeThroughSpherePeelsInEitherChildOrder)
@@ -216,4 +222,47 @@ TEST_F(DepthPeelingTest, ConeThroughSpherePeelsInEitherChildOrder)
     int overlaps = 0;
     EXPECT_EQ(countMismatches(coneFirst, surfaces, overlaps), 0);
     EXPECT_GT(overlaps, 300);
+}
+
+TEST_F(DepthPeelingTest, UnderScreenEffectsTheLayersBlendOverTheBackgroundToo)
+{
+    // ScreenEffects with the opaque wall and the peeled spheres as children; one sphere lies over
+    // the background alone. Occlusion of strength 0 runs the effects' composite without changing
+    // a colour: the picture is the analytic blend, as without the effects (the composite's 8-bit
+    // premultiplied colour may round one level more).
+    const SphereSpec wall = {osg::Vec3(0.0f, 0.0f, 0.0f), 2.0f, WHITE};
+    const SphereSpec behind = {osg::Vec3(-0.3f, 3.0f, 0.2f), 0.8f, RED};
+    const SphereSpec inFront = {osg::Vec3(0.8f, -3.0f, -0.2f), 0.5f, GREEN};
+    const SphereSpec aside = {osg::Vec3(-2.9f, -1.0f, 1.2f), 0.6f, RED};
+    osg::ref_ptr<DepthPeeling> peeling = new DepthPeeling;
+    for (const SphereSpec& spec : {behind, inFront, aside})
+        peeling->addChild(sphere(spec.center, spec.radius, spec.color, 0.5f).get());
+    osg::ref_ptr<osgGlyphs::ScreenEffects> effects = new osgGlyphs::ScreenEffects;
+    effects->addChild(createSphereCloud({wall}, true).get());
+    effects->addChild(peeling.get());
+    effects->setAmbientOcclusion(true);
+    effects->setOcclusionStrength(0.0f);
+    const Frame frame = renderer.render(effects.get());
+    saveFrame(frame, "peeling_under_screen_effects");
+
+    const std::vector<Surface> surfaces = {renderAlone(createSphereCloud({wall}, true).get(), 1.0f),
+                                           renderAlone(createSphereCloud({behind}, true).get(), 0.5f),
+                                           renderAlone(createSphereCloud({inFront}, true).get(), 0.5f),
+                                           renderAlone(createSphereCloud({aside}, true).get(), 0.5f)};
+    int overlaps = 0;
+    EXPECT_EQ(countMismatches(frame, surfaces, overlaps, COLOR_TOLERANCE + 1), 0);
+    int asideAlone = 0;
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x)
+            asideAlone += surfaces[3].frame.isCovered(x, y) && !surfaces[0].frame.isCovered(x, y) ? 1 : 0;
+    EXPECT_GT(asideAlone, 100); // the case the effects used to lose
+
+    // With outlines too, the sphere over the background stays: its centre keeps its colour.
+    effects->setOutlines(true);
+    const Frame outlined = renderer.render(effects.get());
+    const osg::Vec3d centre = outlined.project(osg::Vec3d(aside.center));
+    const osg::Vec4ub expected = frame.colorAt(int(centre.x()), int(centre.y()));
+    const osg::Vec4ub actual = outlined.colorAt(int(centre.x()), int(centre.y()));
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(actual[c], expected[c], 1) << "channel " << c;
 }

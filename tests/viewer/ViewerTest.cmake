@@ -177,10 +177,12 @@ elseif(CASE STREQUAL "transparency")
     check(match whole.png plain.png 2 0.0)
     expect_failure("--opacity: the opacity goes from 0 \\(excluded\\) to 1" ${spheres} --opacity 0)
     expect_failure("--peel-layers: from 1 to 64 layers" ${spheres} --peel-layers 0)
-    expect_failure("--opacity does not combine with --outline or a screen-space --ao-mode yet" ${spheres}
-                   --opacity 0.5 --outline)
-    expect_failure("--opacity does not combine with --outline or a screen-space --ao-mode yet" ${spheres}
-                   --opacity 0.5 --ao-mode screen)
+    # With outlines and screen-space occlusion (ScreenEffects above the peeling): the transparent
+    # spheres still blend over the background (they used to vanish there), outlined.
+    expect_success(${spheres} --output effects.png --opacity 0.5 --peel-layers 3 --outline --ao --ao-mode screen
+                   ${oblique})
+    check(coverage effects.png 0.05)
+    check(differ half.png effects.png 0.01)
 elseif(CASE STREQUAL "radius_column")
     # Without --radius-by: a radius column gives the radii, else a diameter column halved.
     set(view_without_radius --size 160 120 --camera 0 0 5 0 0 0 0 1 0 --fov 30)

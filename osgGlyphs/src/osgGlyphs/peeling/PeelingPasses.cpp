@@ -4,6 +4,7 @@
 #include <osgGlyphs/GlyphStateCache>
 
 #include <osg/BlendFunc>
+#include <osg/ColorMask>
 #include <osg/Depth>
 #include <osg/GLExtensions>
 
@@ -109,6 +110,18 @@ PeelingPasses::PeelingPasses()
     _overStateSet = createCompositionStateSet(
         new osg::BlendFunc(osg::BlendFunc::ONE, osg::BlendFunc::ONE_MINUS_SRC_ALPHA), false);
 
+    // The nearest layer's depth (the opaque scene's where it is nearer) goes into the target, as
+    // a transparent surface drawn with depth writes would leave it.
+    _depthStateSet =
+        createCompositionStateSet(new osg::BlendFunc(osg::BlendFunc::ONE, osg::BlendFunc::ZERO), false);
+    _depthStateSet->setDefine("OSGGLYPHS_PEEL_NEAREST_DEPTH",
+                              osg::StateAttribute::ON | osg::StateAttribute::PROTECTED);
+    _depthStateSet->setAttribute(new osg::ColorMask(false, false, false, false),
+                                 osg::StateAttribute::ON | osg::StateAttribute::PROTECTED);
+    _depthStateSet->setAttribute(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, true),
+                                 osg::StateAttribute::ON | osg::StateAttribute::PROTECTED);
+    _depthStateSet->setMode(GL_DEPTH_TEST, osg::StateAttribute::ON | osg::StateAttribute::PROTECTED);
+
     _quad = osg::createTexturedQuadGeometry(osg::Vec3(-1.0f, -1.0f, 0.0f), osg::Vec3(2.0f, 0.0f, 0.0f),
                                             osg::Vec3(0.0f, 2.0f, 0.0f));
     _quad->setUseDisplayList(false);
@@ -117,12 +130,12 @@ PeelingPasses::PeelingPasses()
 
 void PeelingPasses::Targets::releaseGLObjects(osg::State* state) const
 {
-    for (const osg::Texture2D* texture :
-         {opaqueDepth.get(), layerDepth.get(), previousDepth.get(), layerColor.get(), accumulatedColor.get()})
+    for (const osg::Texture2D* texture : {opaqueDepth.get(), layerDepth.get(), previousDepth.get(),
+                                          nearestDepth.get(), layerColor.get(), accumulatedColor.get()})
         if (texture)
             texture->releaseGLObjects(state);
     for (const osg::FrameBufferObject* framebuffer :
-         {opaque.get(), layer.get(), previous.get(), accumulated.get()})
+         {opaque.get(), layer.get(), previous.get(), nearest.get(), accumulated.get()})
         if (framebuffer)
             framebuffer->releaseGLObjects(state);
 }
@@ -136,16 +149,25 @@ void PeelingPasses::resizeTargets(osg::State& state, int width, int height)
     t.opaqueDepth = createDepthTarget(width, height);
     t.layerDepth = createDepthTarget(width, height);
     t.previousDepth = createDepthTarget(width, height);
+    t.nearestDepth = createDepthTarget(width, height);
     t.layerColor = createColorTarget(width, height);
     t.accumulatedColor = createColorTarget(width, height);
     t.opaque = createFramebuffer(t.opaqueDepth.get(), nullptr);
     t.layer = createFramebuffer(t.layerDepth.get(), t.layerColor.get());
     t.previous = createFramebuffer(t.previousDepth.get(), nullptr);
+    t.nearest = createFramebuffer(t.nearestDepth.get(), nullptr);
     t.accumulated = createFramebuffer(nullptr, t.accumulatedColor.get());
+    // Made here, on a unit of ours: a framebuffer object would make its textures on whichever
+    // unit is active, behind OSG's back, and the next drawable would sample the wrong one.
+    for (osg::Texture2D* texture : {t.opaqueDepth.get(), t.layerDepth.get(), t.previousDepth.get(),
+                                    t.nearestDepth.get(), t.layerColor.get(), t.accumulatedColor.get()})
+        state.applyTextureAttribute(LAYER_TEXTURE_UNIT, texture);
+    state.haveAppliedTextureAttribute(LAYER_TEXTURE_UNIT, osg::StateAttribute::TEXTURE);
     _passStateSet->setTextureAttribute(DEPTH_PEEL_TEXTURE_UNIT, t.previousDepth.get());
     const unsigned int PROTECTED = osg::StateAttribute::ON | osg::StateAttribute::PROTECTED;
     _underStateSet->setTextureAttribute(LAYER_TEXTURE_UNIT, t.layerColor.get(), PROTECTED);
     _overStateSet->setTextureAttribute(LAYER_TEXTURE_UNIT, t.accumulatedColor.get(), PROTECTED);
+    _depthStateSet->setTextureAttribute(LAYER_TEXTURE_UNIT, t.nearestDepth.get(), PROTECTED);
 }
 
 void PeelingPasses::compose(osg::RenderInfo& renderInfo, osg::StateSet* stateSet)
@@ -224,12 +246,20 @@ void PeelingPasses::drawImplementation(osgUtil::RenderBin* bin, osg::RenderInfo&
         _targets.layer->apply(state, osg::FrameBufferObject::READ_DRAW_FRAMEBUFFER);
         bin->drawImplementation(renderInfo, previous);
 
-        if (layer + 1 < _numLayers)
+        // The layer's depth: the first for the target, each but the last for the next pass.
+        const auto keepDepth = [&](osg::FrameBufferObject* target)
         {
             openWriteMasks(state);
-            _targets.previous->apply(state, osg::FrameBufferObject::DRAW_FRAMEBUFFER);
+            target->apply(state, osg::FrameBufferObject::DRAW_FRAMEBUFFER);
+            // Again: making a framebuffer object binds it for reading too.
+            _targets.layer->apply(state, osg::FrameBufferObject::READ_FRAMEBUFFER);
             ext->glBlitFramebuffer(x0, y0, x1, y1, x0, y0, x1, y1, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-        }
+        };
+        if (layer == 0)
+            keepDepth(_targets.nearest.get());
+        if (layer + 1 < _numLayers)
+            keepDepth(_targets.previous.get());
+
         _targets.accumulated->apply(state, osg::FrameBufferObject::READ_DRAW_FRAMEBUFFER);
         compose(renderInfo, _underStateSet.get());
     }
@@ -237,6 +267,7 @@ void PeelingPasses::drawImplementation(osgUtil::RenderBin* bin, osg::RenderInfo&
     ext->glBindFramebuffer(GL_DRAW_FRAMEBUFFER_EXT, targetDraw);
     ext->glBindFramebuffer(GL_READ_FRAMEBUFFER_EXT, targetRead);
     compose(renderInfo, _overStateSet.get());
+    compose(renderInfo, _depthStateSet.get());
     glClearColor(clearColor[0], clearColor[1], clearColor[2], clearColor[3]);
     glClearDepth(clearDepth);
 }
@@ -248,5 +279,6 @@ void PeelingPasses::releaseGLObjects(osg::State* state)
     _passStateSet->releaseGLObjects(state);
     _underStateSet->releaseGLObjects(state);
     _overStateSet->releaseGLObjects(state);
+    _depthStateSet->releaseGLObjects(state);
     _quad->releaseGLObjects(state);
 }

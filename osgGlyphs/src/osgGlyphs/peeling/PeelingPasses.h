@@ -39,8 +39,9 @@ protected:
     {
         int width = 0;
         int height = 0;
-        osg::ref_ptr<osg::Texture2D> opaqueDepth, layerDepth, previousDepth, layerColor, accumulatedColor;
-        osg::ref_ptr<osg::FrameBufferObject> opaque, layer, previous, accumulated;
+        osg::ref_ptr<osg::Texture2D> opaqueDepth, layerDepth, previousDepth, nearestDepth, layerColor,
+            accumulatedColor;
+        osg::ref_ptr<osg::FrameBufferObject> opaque, layer, previous, nearest, accumulated;
 
         void releaseGLObjects(osg::State* state) const;
     };
@@ -56,6 +57,7 @@ protected:
     osg::ref_ptr<osg::StateSet> _passStateSet;
     osg::ref_ptr<osg::StateSet> _underStateSet; // a layer under the accumulated layers
     osg::ref_ptr<osg::StateSet> _overStateSet;  // the accumulated layers over the target
+    osg::ref_ptr<osg::StateSet> _depthStateSet; // the nearest layer's depth into the target
     osg::ref_ptr<osg::Geometry> _quad;
 };
 
