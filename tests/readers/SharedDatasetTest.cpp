@@ -21,24 +21,41 @@ struct StoredColumn
     std::vector<std::vector<std::string>> labels; // one per share
 };
 
-/** Reads count shares of text, agrees on them through unifyShares (unless agree is false), and
- * joins column name of frame 0 in share order. */
-StoredColumn readShares(const std::string& text, const std::string& format, const std::string& name,
-                        unsigned int count, bool agree = true)
+/** Count shares of text as count processes read them, each agreed with the others through
+ * unifyShares (unless agree is false): null where reading or agreeing failed, with its error. */
+struct SharedReading
 {
-    std::vector<osg::ref_ptr<PointDataset>> shares(count);
-    std::vector<std::string> errors(count);
+    std::vector<osg::ref_ptr<PointDataset>> shares;
+    std::vector<std::string> errors;
+};
+
+SharedReading readAndAgree(const std::string& text, const std::string& format, unsigned int count,
+                           bool agree = true, const std::string& name = "data")
+{
+    SharedReading reading{std::vector<osg::ref_ptr<PointDataset>>(count), std::vector<std::string>(count)};
     runShares(count,
               [&](const ShareReduction& reduction, unsigned int index)
               {
                   PointReadOptions options;
                   options.share = reduction.getShare();
                   std::vector<std::string> warnings;
-                  shares[index] = readWithOptions(text, format, options, warnings, errors[index]);
-                  if (shares[index].valid() && agree &&
-                      !unifyShares(*shares[index], reduction, errors[index]))
-                      shares[index] = nullptr;
+                  std::string& error = reading.errors[index];
+                  osg::ref_ptr<PointDataset> share =
+                      readWithOptions(text, format, options, warnings, error, name);
+                  if (share.valid() && (!agree || unifyShares(*share, reduction, error)))
+                      reading.shares[index] = share;
               });
+    return reading;
+}
+
+/** Reads count shares of text, agrees on them through unifyShares (unless agree is false), and
+ * joins column name of frame 0 in share order. */
+StoredColumn readShares(const std::string& text, const std::string& format, const std::string& name,
+                        unsigned int count, bool agree = true)
+{
+    const SharedReading reading = readAndAgree(text, format, count, agree);
+    const std::vector<osg::ref_ptr<PointDataset>>& shares = reading.shares;
+    const std::vector<std::string>& errors = reading.errors;
     StoredColumn joined;
     for (unsigned int index = 0; index < count; ++index)
     {
@@ -153,20 +170,8 @@ TEST(SharedDataset, SharesThatDoNotAddUpToTheFilesCountFailInEveryShare)
     // ITEM: NUMBER OF ATOMS says 5; the frame has 4 rows, and the file ends there.
     const std::string dump = "ITEM: TIMESTEP\n40\nITEM: NUMBER OF ATOMS\n5\nITEM: BOX BOUNDS pp pp pp\n"
                              "0 1\n0 1\n0 1\nITEM: ATOMS id x y z\n1 0 0 0\n2 1 0 0\n3 2 0 0\n4 3 0 0\n";
-    const unsigned int count = 3;
-    std::vector<std::string> errors(count);
-    runShares(count,
-              [&](const ShareReduction& reduction, unsigned int index)
-              {
-                  PointReadOptions options;
-                  options.share = reduction.getShare();
-                  std::vector<std::string> warnings;
-                  osg::ref_ptr<PointDataset> share =
-                      readWithOptions(dump, "lammps", options, warnings, errors[index], "short.dump");
-                  EXPECT_TRUE(share.valid()) << errors[index];
-                  if (share.valid())
-                      EXPECT_FALSE(unifyShares(*share, reduction, errors[index]));
-              });
+    const SharedReading reading = readAndAgree(dump, "lammps", 3, true, "short.dump");
+    const std::vector<std::string>& errors = reading.errors;
     for (const std::string& error : errors)
         EXPECT_EQ(
             error,
