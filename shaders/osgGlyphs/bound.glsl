@@ -2,6 +2,7 @@
 
 #include "occlusion.glsl"
 #include "clip.glsl"
+#include "peel.glsl"
 
 // True when the framebuffer has one sample per pixel, at its centre (no multisampling).
 uniform bool osgGlyphs_singleSample;
@@ -57,6 +58,50 @@ void keepVertexFromClipPlanes()
     gl_ClipDistance[7] = 1.0;
 }
 
+#if defined(OSGGLYPHS_DEPTH_PEEL) && !defined(OSGGLYPHS_VECTOR_SHAPE)
+// The most pixel centres per axis that a sphere's rectangle may hold for its vertex stage to
+// ray-cast them against the previous layer; larger spheres are left to the fragments.
+const float PEEL_TEST_CENTRES = 2.0;
+
+/** Depth peeling: whether a small sphere, inside a rectangle with these NDC corners, is peeled
+ * away at every pixel centre it covers, so that it needs no primitive in this layer. The centres
+ * are ray-cast as impostor.frag does (from the near plane, the same arithmetic), so the answer is
+ * the fragments' own: small glyphs are what rasterising costs, and from the second layer on most
+ * of a sparse cloud's are peeled away whole. Clip planes, which move the drawn point, and
+ * multisampling leave every glyph to the fragments. */
+bool isPeeledAwaySphere(vec4 sphere, vec2 corners[4])
+{
+    if (osgGlyphs_clipPlanes != 0 || !osgGlyphs_singleSample)
+        return false;
+    vec2 toPixels = 0.5 * osgGlyphs_viewport.zw;
+    vec2 lo = (min(min(corners[0], corners[1]), min(corners[2], corners[3])) + 1.0) * toPixels;
+    vec2 hi = (max(max(corners[0], corners[1]), max(corners[2], corners[3])) + 1.0) * toPixels;
+    const float margin = 1e-2; // pixels: centres on the rectangle's edge are tested too
+    vec2 firstCentre = ceil(lo - 0.5 - margin);
+    vec2 lastCentre = floor(hi - 0.5 + margin);
+    if (any(greaterThan(lastCentre - firstCentre, vec2(PEEL_TEST_CENTRES - 1.0))))
+        return false;
+    for (float y = firstCentre.y; y <= lastCentre.y; ++y)
+        for (float x = firstCentre.x; x <= lastCentre.x; ++x)
+        {
+            vec2 window = osgGlyphs_viewport.xy + vec2(x, y) + 0.5;
+            vec2 ndc = (window - osgGlyphs_viewport.xy) / osgGlyphs_viewport.zw * 2.0 - 1.0;
+            vec3 origin = unprojectNdc(vec3(ndc, -1.0));
+            vec3 direction = normalize(unprojectNdc(vec3(ndc, 1.0)) - origin);
+            float tEnter, tLeave;
+            if (!intersectSphere(origin, direction, sphere, tEnter, tLeave))
+                continue;
+            float t = max(tEnter, 0.0);
+            if (t > tLeave)
+                continue;
+            float ndcZ = ndcDepth(origin + direction * t);
+            if (ndcZ <= 1.0 && !isPeeledAway(ivec2(window), windowDepth(ndcZ)))
+                return false;
+        }
+    return true;
+}
+#endif
+
 /** Four NDC corners (in triangle-strip order) of a rectangle that contains the glyph, and the
   * NDC depth of its nearest point; false when the glyph is wholly behind the near plane or on
   * the removed side of a clip plane, covers no sample or lies behind what is drawn (isOccluded). */
@@ -78,5 +123,11 @@ bool glyphBound(Glyph glyph, out vec2 corners[4], out float nearestNdcZ)
         return false;
     corners = vec2[4](box.xy, box.zy, box.xw, box.zw);
 #endif
-    return coversASample(corners) && !isOccluded(corners, nearestNdcZ);
+    if (!coversASample(corners) || isOccluded(corners, nearestNdcZ))
+        return false;
+#if defined(OSGGLYPHS_DEPTH_PEEL) && !defined(OSGGLYPHS_VECTOR_SHAPE)
+    if (isPeeledAwaySphere(glyph.sphere, corners))
+        return false;
+#endif
+    return true;
 }

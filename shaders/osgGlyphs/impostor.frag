@@ -155,7 +155,7 @@ void main()
         discard; // beyond the far plane, where fixed-function geometry is clipped too
     gl_FragDepth = windowDepth(ndcZ);
 #ifdef OSGGLYPHS_DEPTH_PEEL
-    if (isPeeledAway(gl_FragDepth))
+    if (isPeeledAway(ivec2(gl_FragCoord.xy), gl_FragDepth))
         discard;
 #endif
     float ambientLight = 1.0;

@@ -5,9 +5,10 @@
 // The window depth of the previous layer (0 before the first layer), one texel per pixel.
 uniform sampler2D osgGlyphs_peelDepth;
 
-/** Whether a fragment of this window depth belongs to a layer peeled already. */
-bool isPeeledAway(float depth)
+/** Whether a fragment of this window depth, at this pixel (window coordinates), belongs to a
+ * layer peeled already. */
+bool isPeeledAway(ivec2 pixel, float depth)
 {
-    return depth <= texelFetch(osgGlyphs_peelDepth, ivec2(gl_FragCoord.xy), 0).r;
+    return depth <= texelFetch(osgGlyphs_peelDepth, pixel, 0).r;
 }
 #endif

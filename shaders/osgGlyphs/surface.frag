@@ -16,7 +16,7 @@ out vec4 color;
 void main()
 {
 #ifdef OSGGLYPHS_DEPTH_PEEL
-    if (isPeeledAway(gl_FragCoord.z))
+    if (isPeeledAway(ivec2(gl_FragCoord.xy), gl_FragCoord.z))
         discard;
 #endif
     vec3 normal = normalize(gl_FrontFacing ? surfaceNormal : -surfaceNormal);

@@ -266,3 +266,48 @@ TEST_F(DepthPeelingTest, UnderScreenEffectsTheLayersBlendOverTheBackgroundToo)
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(actual[c], expected[c], 1) << "channel " << c;
 }
+
+TEST_F(DepthPeelingTest, StacksOfSmallSpheresPeelAsSortedInEitherArrayOrder)
+{
+    // Spheres of about a pixel, stacked three deep along rays from the eye (at y = -10) and moved
+    // by a third of a pixel within a stack, so that they cover each other's pixels in part: the
+    // vertex stage ray-casts small spheres against the previous layer (bound.glsl) and must keep
+    // every one that still shows at some pixel.
+    const float RADIUS = 0.04f; // about 0.7 pixels
+    const osg::Vec3 eye(0.0f, -10.0f, 0.0f);
+    const float depths[3] = {-1.0f, 0.0f, 1.0f};
+    const osg::Vec3 shifts[3] = {osg::Vec3(), osg::Vec3(0.02f, 0.0f, 0.01f), osg::Vec3(-0.015f, 0.0f, 0.02f)};
+    const osg::Vec4ub colors[3] = {RED, GREEN, WHITE};
+    std::vector<SphereSpec> layers[3];
+    for (float x = -4.0f; x <= 4.0f; x += 0.3f)
+        for (float z = -3.0f; z <= 3.0f; z += 0.3f)
+            for (int k = 0; k < 3; ++k)
+            {
+                const osg::Vec3 onPlane(x, 0.0f, z);
+                const osg::Vec3 center = eye + (onPlane - eye) * ((10.0f + depths[k]) / 10.0f) + shifts[k];
+                layers[k].push_back({center, RADIUS, colors[k]});
+            }
+    std::vector<SphereSpec> nearFirst, farFirst;
+    for (int k = 0; k < 3; ++k)
+    {
+        nearFirst.insert(nearFirst.end(), layers[k].begin(), layers[k].end());
+        farFirst.insert(farFirst.end(), layers[2 - k].begin(), layers[2 - k].end());
+    }
+    auto cloudOf = [](const std::vector<SphereSpec>& spheres)
+    {
+        osg::ref_ptr<GlyphCloud> cloud = createSphereCloud(spheres, true);
+        cloud->setOpacity(0.5f);
+        return cloud;
+    };
+    const Frame frontToBack = renderPeeled({cloudOf(nearFirst).get()});
+    const Frame backToFront = renderPeeled({cloudOf(farFirst).get()});
+    saveFrame(frontToBack, "peeling_small_spheres");
+
+    EXPECT_EQ(countDifferentPixels(frontToBack, backToFront), 0);
+    std::vector<Surface> surfaces;
+    for (const auto& layer : layers)
+        surfaces.push_back(renderAlone(createSphereCloud(layer, true).get(), 0.5f));
+    int overlaps = 0;
+    EXPECT_EQ(countMismatches(frontToBack, surfaces, overlaps), 0);
+    EXPECT_GT(overlaps, 500);
+}
