@@ -61,7 +61,7 @@ void keepVertexFromClipPlanes()
 #if defined(OSGGLYPHS_DEPTH_PEEL) && !defined(OSGGLYPHS_VECTOR_SHAPE)
 // The most pixel centres per axis that a sphere's rectangle may hold for its vertex stage to
 // ray-cast them against the previous layer; larger spheres are left to the fragments.
-const float PEEL_TEST_CENTRES = 2.0;
+const float PEEL_TEST_CENTRES = 4.0;
 
 /** Depth peeling: whether a small sphere, inside a rectangle with these NDC corners, is peeled
  * away at every pixel centre it covers, so that it needs no primitive in this layer. The centres
