@@ -3,7 +3,6 @@
 #ifndef OSGGLYPHVIEWER_SCREENEFFECTSOPTIONS_H
 #define OSGGLYPHVIEWER_SCREENEFFECTSOPTIONS_H 1
 
-
 #include <osgGlyphs/ScreenEffects>
 
 #include <osg/ApplicationUsage>
