@@ -82,8 +82,7 @@ public:
         for (int ring = 1; ring <= lastRing && search.work < SEARCH_BUDGET; ++ring)
         {
             // The shell's faces: two across i, then across j and k without the cells already seen.
-            const Range i = clamp({c.i - ring, c.i + ring}, 0), j = clamp({c.j - ring, c.j + ring}, 1),
-                        k = clamp({c.k - ring, c.k + ring}, 2);
+            const Range j = clamp({c.j - ring, c.j + ring}, 1), k = clamp({c.k - ring, c.k + ring}, 2);
             const Range iInside = clamp({c.i - ring + 1, c.i + ring - 1}, 0);
             const Range jInside = clamp({c.j - ring + 1, c.j + ring - 1}, 1);
             for (int side : {-ring, ring})
