@@ -46,8 +46,10 @@ void expectSharesMakeWhole(const std::string& text, const std::string& format, c
             const PointRange range =
                 getShareRange(PointShare{index, count}, whole->getFrame(frame)->getNumPoints());
             if (pointRanges)
+            {
                 EXPECT_EQ(part.size(), range.end - range.begin)
                     << format << " share " << index << " of " << count;
+            }
             joined[frame].insert(joined[frame].end(), part.begin(), part.end());
         }
     }
@@ -408,6 +410,8 @@ TEST(PointShare, ALammpsFrameShorterThanItsCountEndsTheSharesAtItsNextItem)
             joined.insert(joined.end(), part.begin(), part.end());
         }
         if (count > 1)
+        {
             EXPECT_EQ(joined, (std::vector<float>{0.5f, 1.5f, 2.5f, 3.5f, 4.5f, 5.5f, 6.5f})) << count;
+        }
     }
 }

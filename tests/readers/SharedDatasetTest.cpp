@@ -177,3 +177,24 @@ TEST(SharedDataset, SharesThatDoNotAddUpToTheFilesCountFailInEveryShare)
             error,
             "short.dump: frame 1 (timestep 40): the file counts 5 points, its 3 shares read 4 together");
 }
+
+TEST(SharedDataset, ALastFrameCutShortIsLeftOutByEveryShare)
+{
+    // The second frame ends in the middle of its 6th of 8 rows: only the last share meets the cut.
+    std::string dump;
+    for (int frame = 0; frame < 2; ++frame)
+    {
+        dump +=
+            "ITEM: TIMESTEP\n" + std::to_string(frame) +
+            "\nITEM: NUMBER OF ATOMS\n8\nITEM: BOX BOUNDS pp pp pp\n0 1\n0 1\n0 1\nITEM: ATOMS id x y z\n";
+        for (int i = 1; i <= (frame == 0 ? 8 : 5); ++i)
+            dump += std::to_string(i) + " 0." + std::to_string(i) + " 0.5 0.5\n";
+    }
+    dump += "6 0.6";
+    const SharedReading reading = readAndAgree(dump, "lammps", 3);
+    for (unsigned int index = 0; index < 3; ++index)
+    {
+        ASSERT_TRUE(reading.shares[index].valid()) << reading.errors[index];
+        EXPECT_EQ(reading.shares[index]->getNumFrames(), 1u) << "share " << index;
+    }
+}

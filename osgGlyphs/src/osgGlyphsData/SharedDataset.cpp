@@ -119,6 +119,11 @@ bool checkPointCount(const PointData& frame, std::size_t index, const ShareReduc
 
 bool osgGlyphsData::unifyShares(PointDataset& dataset, const ShareReduction& reduction, std::string& error)
 {
+    // A last frame that the file cuts short is left out only by the shares that meet the cut:
+    // every share keeps the frames that all of them kept.
+    std::vector<double> frames = {static_cast<double>(dataset.getNumFrames())};
+    reduction.minimum(frames);
+    dataset.getFrames().resize(static_cast<std::size_t>(frames[0]));
     for (std::size_t index = 0; index < dataset.getFrames().size(); ++index)
     {
         const osg::ref_ptr<PointData>& frame = dataset.getFrames()[index];
