@@ -4,6 +4,7 @@
 
 #include "culling/DepthPyramid.h"
 #include "culling/GlyphChunks.h"
+#include "culling/ScreenCover.h"
 
 #include <gtest/gtest.h>
 
@@ -46,7 +47,9 @@ TEST(DepthPyramid, BoundsEveryRectangleFromAbove)
                 ASSERT_GE(pyramid.farthest(x0, y0, x1, y1, texels), truth)
                     << width << "x" << height << " [" << x0 << "," << x1 << "]x[" << y0 << "," << y1 << "]";
             if (x1 - x0 < 2 && y1 - y0 < 2)
+            {
                 EXPECT_EQ(pyramid.farthest(x0, y0, x1, y1), truth) << "level 0 is exact";
+            }
         }
     }
 }
@@ -105,4 +108,64 @@ TEST(GlyphChunks, BoxesBeyondTheRangeOfAFloatAreOrderedToo)
         unsigned(boxes.size()), [&](unsigned int i) { return boxes[i]; }, 1);
     const std::multiset<unsigned int> ids(chunks.order->begin(), chunks.order->end());
     EXPECT_EQ(ids, (std::multiset<unsigned int>{0, 1, 2, 3}));
+}
+
+namespace
+{
+
+ChunkInView chunkInView(unsigned int chunk, float nearest, int x0, int y0, int x1, int y1)
+{
+    return ChunkInView{chunk, nearest, x0, y0, x1, y1};
+}
+
+std::vector<unsigned int> chunkIds(const std::vector<ChunkInView>& chunks)
+{
+    std::vector<unsigned int> ids;
+    for (const ChunkInView& chunk : chunks)
+        ids.push_back(chunk.chunk);
+    return ids;
+}
+
+}
+
+TEST(ScreenCover, TheChunksThatFirstCoverEachCellComeFirstInTheirOrder)
+{
+    // A 64x32 view: a wall of 16x16 chunks with a hole at (16..31, 16..31), then a chunk over
+    // the whole view, which fills the hole, then one in the hole, behind both.
+    std::vector<ChunkInView> chunks;
+    unsigned int id = 0;
+    for (int y = 0; y < 32; y += 16)
+        for (int x = 0; x < 64; x += 16)
+            if (x != 16 || y != 16)
+            {
+                chunks.push_back(chunkInView(id, 0.1f + 0.01f * float(id), x, y, x + 15, y + 15));
+                ++id;
+            }
+    chunks.insert(chunks.begin() + 3, chunkInView(100, 0.12f, 0, 0, 63, 31)); // nearer than some wall chunks
+    chunks.push_back(chunkInView(101, 0.6f, 16, 16, 31, 31));
+    const size_t cover = putScreenCoverFirst(chunks, 64, 32);
+    // The whole-view chunk covers the cells the first three wall chunks leave; those after it
+    // cover nothing new, nor does the one behind the hole.
+    EXPECT_EQ(cover, 4u);
+    EXPECT_EQ(chunkIds(chunks), (std::vector<unsigned int>{0, 1, 2, 100, 3, 4, 5, 6, 101}));
+}
+
+TEST(ScreenCover, ChunksCoverTheCellsWhollyInsideTheirRectangle)
+{
+    // 8-pixel cells: a rectangle from pixel 4 to 27 holds cells 1 and 2 only.
+    std::vector<ChunkInView> chunks = {chunkInView(0, 0.1f, 4, 0, 27, 7), chunkInView(1, 0.2f, 8, 0, 23, 7),
+                                       chunkInView(2, 0.3f, 0, 0, 7, 7)};
+    EXPECT_EQ(putScreenCoverFirst(chunks, 32, 8), 2u);
+    EXPECT_EQ(chunkIds(chunks), (std::vector<unsigned int>{0, 2, 1}));
+}
+
+TEST(ScreenCover, SmallChunksCoverTheirCentresCellAndTheViewsEdgeEndsACell)
+{
+    // A 20-pixel-wide view: its last cell (16..19) is cut short and counts as whole.
+    std::vector<ChunkInView> chunks = {chunkInView(0, 0.1f, 16, 0, 19, 7), chunkInView(1, 0.2f, 17, 2, 18, 4),
+                                       chunkInView(2, 0.3f, 9, 1, 12, 3), chunkInView(3, 0.4f, 10, 0, 11, 7)};
+    EXPECT_EQ(putScreenCoverFirst(chunks, 20, 8), 2u);
+    EXPECT_EQ(chunkIds(chunks), (std::vector<unsigned int>{0, 2, 1, 3}));
+    std::vector<ChunkInView> none;
+    EXPECT_EQ(putScreenCoverFirst(none, 20, 8), 0u);
 }

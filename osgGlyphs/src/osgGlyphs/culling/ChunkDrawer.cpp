@@ -1,5 +1,6 @@
 #include "ChunkDrawer.h"
 #include "OcclusionContext.h"
+#include "ScreenCover.h"
 
 #include <osg/ContextData>
 #include <osg/Depth>
@@ -14,9 +15,9 @@ using namespace osgGlyphs::detail;
 namespace
 {
 
-/** Where the rounds end, as fractions of the chunks in view, nearest first: the first round lays
- * down the front of the cloud, each later one is tested against everything before it. */
-const double ROUND_ENDS[] = {1.0 / 32.0, 1.0 / 8.0, 1.0 / 2.0, 1.0};
+/** Where the rounds after the first end, as fractions of the chunks in view that do not cover the
+ * view first (putScreenCoverFirst), nearest first: each is tested against everything before it. */
+const double ROUND_ENDS[] = {1.0 / 8.0, 1.0 / 2.0, 1.0};
 
 /** Too few chunks in view to be worth reading the depth back. */
 const size_t MIN_CHUNKS_FOR_OCCLUSION = 16;
@@ -28,15 +29,6 @@ const float OCCLUSION_MARGIN = 1.0f / (1 << 20);
 /** The texels per axis over which a chunk is tested: a fine bound over its whole rectangle, since
  * random packings leave narrow gaps that show far into a cloud. */
 const int CHUNK_TEST_TEXELS = 16;
-
-/** A chunk in view: its pixel rectangle (inclusive, relative to the viewport) and the window
- * depth of its nearest point. */
-struct ChunkInView
-{
-    unsigned int chunk;
-    float nearest;
-    int x0, y0, x1, y1;
-};
 
 /** Projects a chunk's box: false when it is outside the view. */
 bool projectChunk(const osg::BoundingBox& box, const osg::Matrixd& modelViewProjection, double width,
@@ -212,7 +204,12 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
     OcclusionContext* context = osg::get<OcclusionContext>(state.getContextID());
     bool testing = false;
     size_t begin = 0;
+    // The first round lays down the cloud's front over the view.
+    const size_t cover = putScreenCoverFirst(inView, int(viewport->width()), int(viewport->height()));
+    std::vector<size_t> roundEnds = {cover};
     for (double end : ROUND_ENDS)
+        roundEnds.push_back(cover + size_t(std::ceil(end * double(inView.size() - cover))));
+    for (size_t end : roundEnds)
     {
         if (begin >= inView.size())
             break;
@@ -223,8 +220,7 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
             testing = context->readDepth(state, *viewport);
             setGlyphTest(state, testing ? context->applyPyramidTexture(state) : 0, context);
         }
-        const size_t roundEnd =
-            std::min(inView.size(), std::max(begin + 1, size_t(std::ceil(end * double(inView.size())))));
+        const size_t roundEnd = std::min(inView.size(), std::max(begin + 1, end));
         round.clear();
         for (size_t k = begin; k < roundEnd; ++k)
         {
