@@ -132,8 +132,8 @@ TEST_P(CullingRender, OrbitWithAJumpMatchesTheUnculledCloud)
 INSTANTIATE_TEST_SUITE_P(Shapes, CullingRender,
                          ::testing::Values(GlyphShape::Sphere, GlyphShape::Cone, GlyphShape::Arrow,
                                            GlyphShape::Cylinder),
-                         [](const ::testing::TestParamInfo<GlyphShape>& info)
-                         { return std::string(osgGlyphs::getShapeName(info.param)); });
+                         [](const ::testing::TestParamInfo<GlyphShape>& instance)
+                         { return std::string(osgGlyphs::getShapeName(instance.param)); });
 
 TEST(CullingRenderEdits, MovedGlyphsAndAClipPlaneMatchTheUnculledCloud)
 {

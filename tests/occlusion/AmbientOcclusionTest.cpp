@@ -180,9 +180,9 @@ TEST_P(AmbientOcclusionRender, ContactSideIsDarker)
 
 INSTANTIATE_TEST_SUITE_P(Techniques, AmbientOcclusionRender,
                          ::testing::Values("geometry-shader", "point-sprite", "instanced"),
-                         [](const ::testing::TestParamInfo<std::string>& info)
+                         [](const ::testing::TestParamInfo<std::string>& instance)
                          {
-                             std::string name = info.param;
+                             std::string name = instance.param;
                              name.erase(std::remove(name.begin(), name.end(), '-'), name.end());
                              return name;
                          });

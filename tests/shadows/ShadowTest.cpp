@@ -430,7 +430,7 @@ TEST(GlyphShadowsState, AUnitWithoutTexGenPlanesReceivesNothing)
 INSTANTIATE_TEST_SUITE_P(Techniques, GlyphShadows,
                          ::testing::Values(Technique::ShadowMap, Technique::ViewDependent,
                                            Technique::ViewDependentOrthographic),
-                         [](const ::testing::TestParamInfo<Technique>& info)
-                         { return techniqueName(info.param); });
+                         [](const ::testing::TestParamInfo<Technique>& instance)
+                         { return techniqueName(instance.param); });
 
 } // namespace

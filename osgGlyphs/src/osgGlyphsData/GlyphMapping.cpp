@@ -453,9 +453,11 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
     cloud->setName(data.getSource() + " timestep " + std::to_string(data.getTimestep()));
     applyGlyphStyle(*cloud, _options);
     cloud->setOrigin(origin);
-    cloud->setPositions(positions.get());
+    // The positions last: the setters before them work on an empty cloud, and the culling chunks
+    // are built once.
     if (!setRadii(*cloud, data, error) || !setVectors(*cloud, data, error) || !setColors(*cloud, data, error))
         return nullptr;
+    cloud->setPositions(positions.get());
     return cloud;
 }
 
@@ -474,7 +476,7 @@ bool GlyphMapper::setRadii(GlyphCloud& cloud, const PointData& data, std::string
                               : missingColumn(option("radius-by"), _radiusColumn, data);
         return false;
     }
-    osg::ref_ptr<osg::FloatArray> radii = new osg::FloatArray(cloud.getPositions()->size());
+    osg::ref_ptr<osg::FloatArray> radii = new osg::FloatArray(data.getNumPoints());
     for (std::size_t i = 0; i < radii->size(); ++i)
         (*radii)[i] = _elementRadii ? elementOf((*column)[i]).covalentRadius : (*column)[i] * _radius;
     cloud.setRadii(radii.get());
@@ -491,7 +493,7 @@ bool GlyphMapper::setVectors(GlyphCloud& cloud, const PointData& data, std::stri
         error = missingColumn(option("vector"), joinColumns(_vectorColumns), data);
         return false;
     }
-    osg::ref_ptr<osg::Vec3Array> vectors = new osg::Vec3Array(cloud.getPositions()->size());
+    osg::ref_ptr<osg::Vec3Array> vectors = new osg::Vec3Array(data.getNumPoints());
     for (std::size_t i = 0; i < vectors->size(); ++i)
         (*vectors)[i].set((*v[0])[i], (*v[1])[i], (*v[2])[i]);
     cloud.setVectors(vectors.get());
@@ -501,7 +503,7 @@ bool GlyphMapper::setVectors(GlyphCloud& cloud, const PointData& data, std::stri
 
 bool GlyphMapper::setColors(GlyphCloud& cloud, const PointData& data, std::string& error) const
 {
-    const std::size_t n = cloud.getPositions()->size();
+    const std::size_t n = data.getNumPoints();
     if (_colorSource == ColorSource::Column || _colorSource == ColorSource::Speed)
     {
         osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray;

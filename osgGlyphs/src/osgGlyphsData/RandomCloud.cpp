@@ -96,7 +96,6 @@ osg::ref_ptr<GlyphCloud> osgGlyphsData::createRandomCloud(const RandomCloudOptio
     const float radius = options.radius > 0.0f ? options.radius : getDefaultRandomRadius(options.count);
     const PointRange range = getShareRange(options.share, options.count);
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
-    cloud->setPositions(createPositions(range, options.seed).get());
     cloud->setRadius(radius);
     cloud->setScalars(createScalars(range, options.seed).get());
     cloud->setScalarRange(0.0f, 1.0f);
@@ -106,6 +105,9 @@ osg::ref_ptr<GlyphCloud> osgGlyphsData::createRandomCloud(const RandomCloudOptio
         cloud->setLengthScale(options.lengthScale > 0.0f ? options.lengthScale : 4.0f * radius);
     }
     cloud->setShape(options.shape);
+    // The positions last: the setters before them work on an empty cloud, and the culling chunks
+    // are built once.
+    cloud->setPositions(createPositions(range, options.seed).get());
     return cloud;
 }
 

@@ -157,6 +157,8 @@ void GlyphCloud::setScalars(osg::FloatArray* scalars)
 
 void GlyphCloud::setShape(GlyphShape shape)
 {
+    if (shape == _shape)
+        return;
     _shape = shape;
     _packedVectors = PackedSource(); // vectors count for vector shapes only
     dirtyGlyphs();
@@ -167,7 +169,7 @@ void GlyphCloud::setTechnique(GlyphTechnique* technique)
 {
     _technique = technique ? technique : createTechnique(DEFAULT_GLYPH_TECHNIQUE).get();
     _builtFor = {};
-    updateChunks();
+    updateChunkUse();
     buildPrimitives();
     updateStateSet();
 }
@@ -291,7 +293,7 @@ void GlyphCloud::setOpacity(float opacity)
 void GlyphCloud::setCulling(GlyphCulling culling)
 {
     _culling = culling;
-    updateChunks();
+    updateChunkUse();
     buildPrimitives();
 }
 
@@ -305,6 +307,13 @@ void GlyphCloud::setCullingChunkSize(unsigned int glyphs)
 GlyphCullingStatistics GlyphCloud::getCullingStatistics(unsigned int contextID) const
 {
     return contextID < _cullingStatistics.size() ? _cullingStatistics[contextID] : GlyphCullingStatistics();
+}
+
+void GlyphCloud::updateChunkUse()
+{
+    // The chunks hold the glyphs' data only: they stay valid whichever technique draws them.
+    if (!_chunks || _culling == GlyphCulling::Off || !getEffectiveTechnique()->supportsCulling())
+        updateChunks();
 }
 
 void GlyphCloud::updateChunks()
