@@ -38,11 +38,10 @@ void radixSort(std::vector<uint64_t>& keys)
     }
 }
 
+/** Cuts the sorted keys into chunks along the octree; the chunks' boxes are left empty. */
 struct Splitter
 {
     const std::vector<uint64_t>& keys;
-    const osg::DrawElementsUInt& order;
-    const std::function<osg::BoundingBox(unsigned int)>& glyphBox;
     unsigned int maxChunkSize;
     std::vector<GlyphChunk>& chunks;
 
@@ -54,8 +53,6 @@ struct Splitter
             GlyphChunk chunk;
             chunk.first = static_cast<unsigned int>(begin);
             chunk.count = static_cast<unsigned int>(end - begin);
-            for (size_t k = begin; k < end; ++k)
-                chunk.box.expandBy(glyphBox(order[k]));
             chunks.push_back(chunk);
             return;
         }
@@ -79,20 +76,23 @@ GlyphChunks osgGlyphs::detail::buildGlyphChunks(unsigned int numGlyphs,
                                                 const std::function<osg::BoundingBox(unsigned int)>& glyphBox,
                                                 unsigned int maxChunkSize)
 {
-    // The glyph boxes are computed again where needed rather than held: 24 bytes a glyph.
+    // Each glyph's box is computed twice, both times in the glyphs' own order (memory order),
+    // rather than held (24 bytes a glyph): for its centre, then for its chunk's box.
     std::vector<uint32_t> ids;
-    osg::BoundingBox centres;
+    std::vector<osg::Vec3f> centres;
+    osg::BoundingBox centreBox;
     for (unsigned int i = 0; i < numGlyphs; ++i)
     {
         const osg::BoundingBox box = glyphBox(i);
         if (!box.valid())
             continue;
         ids.push_back(i);
-        centres.expandBy(box.center());
+        centres.push_back(box.center());
+        centreBox.expandBy(centres.back());
     }
 
     std::vector<uint64_t> keys(ids.size());
-    const osg::Vec3d extent = centres.valid() ? osg::Vec3d(centres._max - centres._min) : osg::Vec3d();
+    const osg::Vec3d extent = centreBox.valid() ? osg::Vec3d(centreBox._max - centreBox._min) : osg::Vec3d();
     const double cells = double(1 << MORTON_BITS);
     // Centres and extents overflow a float for boxes near its limit: a cell of NaN is cell 0.
     auto cell = [&](double value, double lo, double size)
@@ -102,20 +102,31 @@ GlyphChunks osgGlyphs::detail::buildGlyphChunks(unsigned int numGlyphs,
     };
     for (size_t k = 0; k < ids.size(); ++k)
     {
-        const osg::Vec3 c = glyphBox(ids[k]).center();
-        const uint32_t code = spreadBits(cell(c.x(), centres.xMin(), extent.x())) |
-                              spreadBits(cell(c.y(), centres.yMin(), extent.y())) << 1 |
-                              spreadBits(cell(c.z(), centres.zMin(), extent.z())) << 2;
+        const osg::Vec3f& c = centres[k];
+        const uint32_t code = spreadBits(cell(c.x(), centreBox.xMin(), extent.x())) |
+                              spreadBits(cell(c.y(), centreBox.yMin(), extent.y())) << 1 |
+                              spreadBits(cell(c.z(), centreBox.zMin(), extent.z())) << 2;
         keys[k] = uint64_t(code) << 32 | ids[k];
     }
     ids = std::vector<uint32_t>();
+    centres = std::vector<osg::Vec3f>();
     radixSort(keys);
 
     GlyphChunks result;
+    Splitter{keys, std::max(1u, maxChunkSize), result.chunks}.split(0, keys.size(), 0);
+    const uint32_t NO_CHUNK = 0xffffffffu;
+    std::vector<uint32_t> chunkOf(numGlyphs, NO_CHUNK);
     result.order = new osg::DrawElementsUInt(GL_POINTS, keys.size());
-    for (size_t k = 0; k < keys.size(); ++k)
-        (*result.order)[k] = uint32_t(keys[k] & 0xffffffffu);
-    Splitter{keys, *result.order, glyphBox, std::max(1u, maxChunkSize), result.chunks}.split(0, keys.size(),
-                                                                                             0);
+    for (uint32_t c = 0; c < result.chunks.size(); ++c)
+        for (size_t k = result.chunks[c].first; k < result.chunks[c].first + result.chunks[c].count; ++k)
+        {
+            const uint32_t id = uint32_t(keys[k] & 0xffffffffu);
+            (*result.order)[k] = id;
+            chunkOf[id] = c;
+        }
+    keys = std::vector<uint64_t>();
+    for (unsigned int i = 0; i < numGlyphs; ++i)
+        if (chunkOf[i] != NO_CHUNK)
+            result.chunks[chunkOf[i]].box.expandBy(glyphBox(i));
     return result;
 }
