@@ -46,11 +46,11 @@ unsigned int log2Of(unsigned int powerOfTwo)
 
 }
 
-TileTree::TileTree(const TileGlyphs& glyphs, const GlyphCloud& style, const TileOptions& options)
+TileTree::TileTree(TileGlyphs& glyphs, const GlyphCloud& style, const TileOptions& options)
     : _glyphs(glyphs), _style(style), _options(options), _cellLevels(log2Of(options.cellsPerAxis))
 {
     osg::BoundingBoxd box;
-    for (const osg::Vec3f& p : _glyphs.positions)
+    for (const osg::Vec3f& p : glyphs.positions)
         box.expandBy(osg::Vec3d(p));
     if (box.valid())
     {
@@ -60,17 +60,34 @@ TileTree::TileTree(const TileGlyphs& glyphs, const GlyphCloud& style, const Tile
         // A little wider than the points, so that the farthest ones quantise inside.
         _cube.size = extent > 0.0 ? extent * (1.0 + 1e-6) : 1.0;
     }
-    std::vector<std::pair<uint64_t, unsigned int>> keyed(_glyphs.positions.size());
+    std::vector<std::pair<uint64_t, unsigned int>> keyed(glyphs.positions.size());
     for (std::size_t i = 0; i < keyed.size(); ++i)
-        keyed[i] = {_cube.code(osg::Vec3d(_glyphs.positions[i])), static_cast<unsigned int>(i)};
+        keyed[i] = {_cube.code(osg::Vec3d(glyphs.positions[i])), static_cast<unsigned int>(i)};
     std::sort(keyed.begin(), keyed.end());
-    _order.resize(keyed.size());
     _codes.resize(keyed.size());
+    std::vector<unsigned int> order(keyed.size());
     for (std::size_t i = 0; i < keyed.size(); ++i)
     {
         _codes[i] = keyed[i].first;
-        _order[i] = keyed[i].second;
+        order[i] = keyed[i].second;
     }
+    keyed = {};
+    // One array at a time, through a copy: permuting in place, cycle by cycle, reads memory out
+    // of order and took 1.7 times as long over all (10M glyphs: 13.3 s against 7.9 s).
+    const auto sort = [&order](auto& values)
+    {
+        if (values.empty())
+            return;
+        std::remove_reference_t<decltype(values)> sorted(values.size());
+        for (std::size_t i = 0; i < order.size(); ++i)
+            sorted[i] = values[order[i]];
+        values.swap(sorted);
+    };
+    sort(glyphs.positions);
+    sort(glyphs.radii);
+    sort(glyphs.scalars);
+    sort(glyphs.colors);
+    sort(glyphs.vectors);
 }
 
 osg::ref_ptr<osg::Node> TileTree::build(osgDB::Archive* archive,
@@ -81,7 +98,7 @@ osg::ref_ptr<osg::Node> TileTree::build(osgDB::Archive* archive,
     _done = 0;
     _error.clear();
     osg::ref_ptr<osg::Node> root =
-        _order.empty() ? osg::ref_ptr<osg::Node>(new osg::Group) : buildNode(0, 0, 0, _order.size());
+        _codes.empty() ? osg::ref_ptr<osg::Node>(new osg::Group) : buildNode(0, 0, 0, _codes.size());
     if (!_error.empty())
     {
         error = _error;
@@ -100,7 +117,7 @@ osg::ref_ptr<osg::Node> TileTree::buildNode(unsigned int level, uint64_t prefix,
         osg::ref_ptr<GlyphCloud> cloud = createLeaf(begin, end);
         _done += end - begin;
         if (_progress)
-            _progress(double(_done) / _order.size());
+            _progress(double(_done) / _codes.size());
         return cloud;
     }
     osg::ref_ptr<osg::Group> children = new osg::Group;
@@ -165,13 +182,12 @@ osg::BoundingSphere TileTree::boundOf(std::size_t begin, std::size_t end) const
     osg::BoundingBoxd box;
     for (std::size_t i = begin; i < end; ++i)
     {
-        const unsigned int glyph = _order[i];
-        double reach = _glyphs.radii[glyph];
+        double reach = _glyphs.radii[i];
         if (vectors)
             reach = reach * headRatio + (_style.getUniformLength()
                                              ? _style.getLengthScale()
-                                             : _glyphs.vectors[glyph].length() * _style.getLengthScale());
-        const osg::Vec3d p = osg::Vec3d(_glyphs.positions[glyph]) + _glyphs.origin;
+                                             : _glyphs.vectors[i].length() * _style.getLengthScale());
+        const osg::Vec3d p = osg::Vec3d(_glyphs.positions[i]) + _glyphs.origin;
         box.expandBy(p - osg::Vec3d(reach, reach, reach));
         box.expandBy(p + osg::Vec3d(reach, reach, reach));
     }
@@ -180,22 +196,13 @@ osg::BoundingSphere TileTree::boundOf(std::size_t begin, std::size_t end) const
 
 osg::ref_ptr<GlyphCloud> TileTree::createLeaf(std::size_t begin, std::size_t end) const
 {
-    std::vector<osg::Vec3f> positions, vectors;
-    std::vector<float> radii, scalars;
-    std::vector<osg::Vec4ub> colors;
-    for (std::size_t i = begin; i < end; ++i)
+    const auto range = [begin, end](const auto& values)
     {
-        const unsigned int glyph = _order[i];
-        positions.push_back(_glyphs.positions[glyph]);
-        radii.push_back(_glyphs.radii[glyph]);
-        if (!_glyphs.scalars.empty())
-            scalars.push_back(_glyphs.scalars[glyph]);
-        if (!_glyphs.colors.empty())
-            colors.push_back(_glyphs.colors[glyph]);
-        if (!_glyphs.vectors.empty())
-            vectors.push_back(_glyphs.vectors[glyph]);
-    }
-    return createCloud(positions, radii, scalars, colors, vectors);
+        using Values = std::remove_const_t<std::remove_reference_t<decltype(values)>>;
+        return values.empty() ? Values() : Values(values.begin() + begin, values.begin() + end);
+    };
+    return createCloud(range(_glyphs.positions), range(_glyphs.radii), range(_glyphs.scalars),
+                       range(_glyphs.colors), range(_glyphs.vectors));
 }
 
 osg::ref_ptr<GlyphCloud> TileTree::createRepresentatives(unsigned int level, std::size_t begin,
@@ -213,17 +220,17 @@ osg::ref_ptr<GlyphCloud> TileTree::createRepresentatives(unsigned int level, std
         std::size_t last = first;
         CellCoverage coverage;
         for (; last < end && _codes[last] >> shift == cell; ++last)
-            coverage.add(osg::Vec3d(_glyphs.positions[_order[last]]), _glyphs.radii[_order[last]]);
+            coverage.add(osg::Vec3d(_glyphs.positions[last]), _glyphs.radii[last]);
         const osg::Vec3d centroid = coverage.getCentroid();
-        unsigned int chosen = _order[first];
+        std::size_t chosen = first;
         double nearest = DBL_MAX;
         for (std::size_t i = first; i < last; ++i)
         {
-            const double distance2 = (osg::Vec3d(_glyphs.positions[_order[i]]) - centroid).length2();
+            const double distance2 = (osg::Vec3d(_glyphs.positions[i]) - centroid).length2();
             if (distance2 < nearest)
             {
                 nearest = distance2;
-                chosen = _order[i];
+                chosen = i;
             }
         }
         positions.push_back(_glyphs.positions[chosen]);

@@ -33,7 +33,9 @@ struct TileGlyphs
 class TileTree
 {
 public:
-    TileTree(const TileGlyphs& glyphs, const osgGlyphs::GlyphCloud& style, const TileOptions& options);
+    /** Puts the glyphs in the order of their octree (Morton order), which the tiles are cut from:
+     * every later walk over them reads memory in order. */
+    TileTree(TileGlyphs& glyphs, const osgGlyphs::GlyphCloud& style, const TileOptions& options);
 
     /** The root node; with an archive, each inner node's children are written into it as they
      * are made, else kept in place. False with error on a write failure. */
@@ -59,8 +61,7 @@ private:
     TileOptions _options;
     unsigned int _cellLevels = 5; // log2 of cellsPerAxis
     OctreeCube _cube;
-    std::vector<unsigned int> _order;
-    std::vector<uint64_t> _codes;
+    std::vector<uint64_t> _codes; // of the glyphs, in their (sorted) order
 
     osgDB::Archive* _archive = nullptr;
     TileBuilder::ProgressFunction _progress;
