@@ -67,6 +67,11 @@ void describeOptions(osg::ApplicationUsage& usage)
                                                    "per occupied cell: 2, 4, .., 256 (default 32).");
     usage.addCommandLineOption("--pixels-per-cell <p>", "A tile gives way to its children when a cell of "
                                                         "its grid would span p pixels (default 1.5).");
+    usage.addCommandLineOption("--memory-glyphs <n>",
+                               "The most glyphs held in memory at a time (default 8000000, about 80 bytes "
+                               "each at peak); larger datasets are sorted through temporary files.");
+    usage.addCommandLineOption("--temp-dir <dir>", "Where those temporary files go (default: the output's "
+                                                   "folder).");
     usage.addCommandLineOption("-h or --help", "Display this help.");
 }
 
@@ -115,6 +120,17 @@ bool readOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::s
         error = "--pixels-per-cell needs a positive number";
         return false;
     }
+    double memoryGlyphs = 0.0;
+    if (arguments.read("--memory-glyphs", memoryGlyphs))
+    {
+        if (!(memoryGlyphs >= 1.0 && memoryGlyphs <= 1e12))
+        {
+            error = "--memory-glyphs needs a number of glyphs from 1 to 1e12";
+            return false;
+        }
+        options.tiles.maxGlyphsInMemory = static_cast<std::size_t>(memoryGlyphs);
+    }
+    arguments.read("--temp-dir", options.tiles.temporaryDirectory);
     for (int i = 1; i < arguments.argc(); ++i)
         if (arguments.isOption(i))
         {
@@ -132,6 +148,11 @@ bool readOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::s
     if (!options.randomCount)
         options.input = arguments[1];
     options.output = arguments[files];
+    if (options.tiles.temporaryDirectory.empty())
+    {
+        const std::string folder = osgDB::getFilePath(options.output);
+        options.tiles.temporaryDirectory = folder.empty() ? "." : folder;
+    }
     if (osgDB::getLowerCaseFileExtension(options.output) != "osga")
     {
         error = options.output + ": the output is an OSG archive, named *.osga";

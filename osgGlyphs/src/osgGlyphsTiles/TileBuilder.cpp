@@ -1,7 +1,7 @@
 #include <osgGlyphsTiles/TileBuilder>
 #include <osgGlyphsTiles/TileChecksum>
 
-#include "TileTree.h"
+#include "TileStream.h"
 
 #include <osg/Version>
 #include <osgDB/Archive>
@@ -11,10 +11,13 @@
 #include <osgDB/Registry>
 
 #include <dlfcn.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <mutex>
 #include <sstream>
 
@@ -34,6 +37,17 @@ const char* const GLYPH_CLOUD_WRAPPER = "osgGlyphs::GlyphCloud";
 bool isPowerOfTwo(unsigned int value)
 {
     return value && !(value & (value - 1));
+}
+
+/** A name for this process's next temporary files in directory (the system's when empty). */
+std::string temporaryPrefix(const std::string& directory)
+{
+    static std::atomic<unsigned int> serial{0};
+    std::error_code error;
+    const std::filesystem::path folder =
+        directory.empty() ? std::filesystem::temp_directory_path(error) : std::filesystem::path(directory);
+    return (folder / ("osgglyphs-tiles-" + std::to_string(getpid()) + "-" + std::to_string(serial++)))
+        .string();
 }
 
 }
@@ -87,7 +101,7 @@ TileBuilder::~TileBuilder() = default;
 
 std::size_t TileBuilder::getNumGlyphs() const
 {
-    return _glyphs->positions.size();
+    return _glyphs->size() + (_spill ? _spill->size() : 0);
 }
 
 bool TileBuilder::addGlyphs(const GlyphCloud& cloud, std::string& error)
@@ -131,6 +145,7 @@ bool TileBuilder::addGlyphs(const GlyphCloud& cloud, std::string& error)
     {
         glyphs.positions.push_back(osg::Vec3f(osg::Vec3d((*positions)[i]) + shift));
         glyphs.radii.push_back(radii ? (*radii)[i] : cloud.getRadius());
+        _box.expandBy(osg::Vec3d(glyphs.positions.back()));
     }
     if (mode == GlyphColorMode::Scalar)
         for (std::size_t i = 0; i < count; ++i)
@@ -148,13 +163,48 @@ bool TileBuilder::addGlyphs(const GlyphCloud& cloud, std::string& error)
         glyphs.colors.insert(glyphs.colors.end(), colors->begin(), colors->begin() + count);
     if (vectors)
         glyphs.vectors.insert(glyphs.vectors.end(), vectorArray->begin(), vectorArray->begin() + count);
+    return glyphs.size() < _options.maxGlyphsInMemory || spill(error);
+}
+
+bool TileBuilder::spill(std::string& error)
+{
+    if (!_spill)
+    {
+        const TileGlyphs& glyphs = *_glyphs;
+        _spill.reset(new TileSpill(temporaryPrefix(_options.temporaryDirectory), !glyphs.scalars.empty(),
+                                   !glyphs.colors.empty(), !glyphs.vectors.empty()));
+        if (!_spill->isOpen())
+        {
+            error = _spill->getPath() + ": cannot create a temporary file (TileOptions::temporaryDirectory)";
+            _spill.reset();
+            return false;
+        }
+    }
+    if (!_spill->append(*_glyphs, 0, _glyphs->size(), error))
+        return false;
+    _glyphs->clear();
     return true;
+}
+
+osg::ref_ptr<osg::Node> TileBuilder::buildTree(TileWriter& writer, std::string& error) const
+{
+    if (_spill)
+        return buildStreamedTree(*_spill, *_glyphs, writer, _options.maxGlyphsInMemory,
+                                 _spill->getPath() + "-part", error);
+    TileTree tree(*_glyphs, writer);
+    if (!tree.size())
+        return new osg::Group;
+    osg::ref_ptr<osg::Node> root = tree.buildNode(0, 0, 0, tree.size());
+    if (!root)
+        error = writer.getError();
+    return root;
 }
 
 osg::ref_ptr<osg::Node> TileBuilder::createTree() const
 {
     std::string error;
-    osg::ref_ptr<osg::Node> root = TileTree(*_glyphs, *_style, _options).build(nullptr, {}, error);
+    TileWriter writer(*_style, _options, cubeAround(_box), *_glyphs, nullptr, getNumGlyphs(), {});
+    osg::ref_ptr<osg::Node> root = buildTree(writer, error);
     if (root && !_colorTitle.empty())
         root->setUserValue(COLOR_TITLE_USER_VALUE, _colorTitle);
     return root;
@@ -181,8 +231,9 @@ bool TileBuilder::write(const std::string& path, std::string& error, const Progr
     bool written = archive->writeNode(*placeHolder, ROOT_FILE).success();
     std::string treeError;
     osg::ref_ptr<osg::Node> root;
+    TileWriter writer(*_style, _options, cubeAround(_box), *_glyphs, archive.get(), getNumGlyphs(), progress);
     if (written)
-        root = TileTree(*_glyphs, *_style, _options).build(archive.get(), progress, treeError);
+        root = buildTree(writer, treeError);
     if (root && !_colorTitle.empty())
         root->setUserValue(COLOR_TITLE_USER_VALUE, _colorTitle);
     if (root)

@@ -53,6 +53,20 @@ OctreeCube OctreeCube::node(unsigned int level, uint64_t prefix) const
     return cube;
 }
 
+OctreeCube osgGlyphsTiles::detail::cubeAround(const osg::BoundingBoxd& box)
+{
+    OctreeCube cube;
+    if (box.valid())
+    {
+        cube.min = box._min;
+        const double extent =
+            std::max({box.xMax() - box.xMin(), box.yMax() - box.yMin(), box.zMax() - box.zMin()});
+        // A little wider than the points, so that the farthest ones quantise inside.
+        cube.size = extent > 0.0 ? extent * (1.0 + 1e-6) : 1.0;
+    }
+    return cube;
+}
+
 uint64_t osgGlyphsTiles::detail::firstCode(unsigned int level, uint64_t prefix)
 {
     return prefix << (3 * (MORTON_LEVELS - level));

@@ -4,6 +4,7 @@
 #ifndef OSGGLYPHS_TILEOCTREE_H
 #define OSGGLYPHS_TILEOCTREE_H 1
 
+#include <osg/BoundingBox>
 #include <osg/Vec3d>
 
 #include <cstdint>
@@ -29,6 +30,9 @@ struct OctreeCube
     /** The cube of the node at this level whose codes start with prefix (3 * level bits). */
     OctreeCube node(unsigned int level, uint64_t prefix) const;
 };
+
+/** The cube that quantises every point of box inside it (of side 1 for no point). */
+OctreeCube cubeAround(const osg::BoundingBoxd& box);
 
 /** The first code of the node at level with prefix, and the first code after it. */
 uint64_t firstCode(unsigned int level, uint64_t prefix);

@@ -46,23 +46,119 @@ unsigned int log2Of(unsigned int powerOfTwo)
 
 }
 
-TileTree::TileTree(TileGlyphs& glyphs, const GlyphCloud& style, const TileOptions& options)
-    : _glyphs(glyphs), _style(style), _options(options), _cellLevels(log2Of(options.cellsPerAxis))
+void TileGlyphs::clear()
 {
-    osg::BoundingBoxd box;
-    for (const osg::Vec3f& p : glyphs.positions)
-        box.expandBy(osg::Vec3d(p));
-    if (box.valid())
+    positions.clear();
+    radii.clear();
+    scalars.clear();
+    colors.clear();
+    vectors.clear();
+}
+
+void TileGlyphs::append(const TileGlyphs& other, std::size_t i)
+{
+    positions.push_back(other.positions[i]);
+    radii.push_back(other.radii[i]);
+    if (!other.scalars.empty())
+        scalars.push_back(other.scalars[i]);
+    if (!other.colors.empty())
+        colors.push_back(other.colors[i]);
+    if (!other.vectors.empty())
+        vectors.push_back(other.vectors[i]);
+}
+
+TileWriter::TileWriter(const GlyphCloud& style, const TileOptions& options, const OctreeCube& cube,
+                       const TileGlyphs& dataset, osgDB::Archive* archive, std::size_t totalGlyphs,
+                       const TileBuilder::ProgressFunction& progress)
+    : _style(style), _options(options), _cellLevels(log2Of(options.cellsPerAxis)), _cube(cube),
+      _origin(dataset.origin), _scalarMin(dataset.scalarMin), _scalarMax(dataset.scalarMax),
+      _archive(archive), _total(totalGlyphs), _progress(progress)
+{
+}
+
+void TileWriter::addDone(std::size_t glyphs)
+{
+    _done += glyphs;
+    if (_progress && _total)
+        _progress(double(_done) / _total);
+}
+
+osg::ref_ptr<osg::Node> TileWriter::createInnerNode(unsigned int level, uint64_t prefix, osg::Group& children,
+                                                    const osg::BoundingBoxd& box,
+                                                    const TileGlyphs& representatives)
+{
+    double childGlyphs = 0.0;
+    for (unsigned int i = 0; i < children.getNumChildren(); ++i)
+        childGlyphs += glyphsDrawnBy(*children.getChild(i));
+    const osg::BoundingSphere bound(osg::Vec3(box.center()), static_cast<float>(box.radius()));
+    const double nodeSize = _cube.size / double(uint64_t(1) << level);
+    // PIXEL_SIZE_ON_SCREEN ranges are the bounding sphere's diameter in pixels: this one is
+    // reached when a cell of the node's grid spans pixelsPerCell pixels.
+    const float refineAt =
+        static_cast<float>(2.0 * bound.radius() / nodeSize * _options.cellsPerAxis * _options.pixelsPerCell);
+    osg::ref_ptr<osg::PagedLOD> lod = new osg::PagedLOD;
+    lod->setName(childrenFileName(level, prefix));
+    lod->setRangeMode(osg::LOD::PIXEL_SIZE_ON_SCREEN);
+    lod->setCenterMode(osg::LOD::USER_DEFINED_CENTER);
+    lod->setCenter(bound.center());
+    lod->setRadius(bound.radius());
+    lod->setUserValue(CHILD_GLYPHS_USER_VALUE, childGlyphs);
+    lod->addChild(createCloud(representatives).get(), 0.0f, refineAt);
+    if (!_archive)
     {
-        _cube.min = box._min;
-        const double extent =
-            std::max({box.xMax() - box.xMin(), box.yMax() - box.yMin(), box.zMax() - box.zMin()});
-        // A little wider than the points, so that the farthest ones quantise inside.
-        _cube.size = extent > 0.0 ? extent * (1.0 + 1e-6) : 1.0;
+        lod->addChild(&children, refineAt, FLT_MAX);
+        return lod;
     }
+    const std::string file = childrenFileName(level, prefix);
+    setTileChecksum(children);
+    const osgDB::ReaderWriter::WriteResult written = _archive->writeNode(children, file);
+    if (!written.success())
+    {
+        _error = "cannot write " + file + " into the archive" +
+                 (written.message().empty() ? std::string() : ": " + written.message());
+        return nullptr;
+    }
+    lod->setFileName(1, file);
+    lod->setRange(1, refineAt, FLT_MAX);
+    return lod;
+}
+
+osg::ref_ptr<GlyphCloud> TileWriter::createCloud(const TileGlyphs& glyphs) const
+{
+    const std::vector<float>& radii = glyphs.radii;
+    osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud(_style, osg::CopyOp::SHALLOW_COPY);
+    cloud->setOrigin(_origin);
+    // The positions last: the cloud is consistent after each call.
+    cloud->setPositions(new osg::Vec3Array);
+    if (std::all_of(radii.begin(), radii.end(), [&](float r) { return r == radii.front(); }))
+    {
+        cloud->setRadii(nullptr);
+        cloud->setRadius(radii.empty() ? _style.getRadius() : radii.front());
+    }
+    else
+        cloud->setRadii(new osg::FloatArray(radii.begin(), radii.end()));
+    if (_style.getColorMode() == GlyphColorMode::Scalar)
+    {
+        cloud->setScalars(new osg::FloatArray(glyphs.scalars.begin(), glyphs.scalars.end()));
+        if (_style.getScalarRangeIsAutomatic())
+            cloud->setScalarRange(_scalarMin, _scalarMax);
+        else
+            cloud->setScalarRange(_style.getScalarRangeMin(), _style.getScalarRangeMax());
+    }
+    else if (_style.getColorMode() == GlyphColorMode::RGBA)
+        cloud->setColors(new osg::Vec4ubArray(glyphs.colors.begin(), glyphs.colors.end()));
+    if (!glyphs.vectors.empty())
+        cloud->setVectors(new osg::Vec3Array(glyphs.vectors.begin(), glyphs.vectors.end()));
+    cloud->setPositions(new osg::Vec3Array(glyphs.positions.begin(), glyphs.positions.end()));
+    return cloud;
+}
+
+TileTree::TileTree(TileGlyphs& glyphs, TileWriter& writer) : _glyphs(glyphs), _writer(writer)
+{
+    const OctreeCube& cube = writer.getCube();
     std::vector<std::pair<uint64_t, unsigned int>> keyed(glyphs.positions.size());
     for (std::size_t i = 0; i < keyed.size(); ++i)
-        keyed[i] = {_cube.code(osg::Vec3d(glyphs.positions[i])), static_cast<unsigned int>(i)};
+        keyed[i] = {cube.code(osg::Vec3d(glyphs.positions[i])), static_cast<unsigned int>(i)};
     std::sort(keyed.begin(), keyed.end());
     _codes.resize(keyed.size());
     std::vector<unsigned int> order(keyed.size());
@@ -90,40 +186,27 @@ TileTree::TileTree(TileGlyphs& glyphs, const GlyphCloud& style, const TileOption
     reorder(glyphs.vectors);
 }
 
-osg::ref_ptr<osg::Node> TileTree::build(osgDB::Archive* archive,
-                                        const TileBuilder::ProgressFunction& progress, std::string& error)
+std::pair<std::size_t, std::size_t> TileTree::rangeOf(unsigned int level, uint64_t prefix) const
 {
-    _archive = archive;
-    _progress = progress;
-    _done = 0;
-    _error.clear();
-    osg::ref_ptr<osg::Node> root =
-        _codes.empty() ? osg::ref_ptr<osg::Node>(new osg::Group) : buildNode(0, 0, 0, _codes.size());
-    if (!_error.empty())
-    {
-        error = _error;
-        return nullptr;
-    }
-    return root;
+    const auto first = std::lower_bound(_codes.begin(), _codes.end(), firstCode(level, prefix));
+    const auto last = std::lower_bound(first, _codes.end(), endCode(level, prefix));
+    return {std::size_t(first - _codes.begin()), std::size_t(last - _codes.begin())};
 }
 
 osg::ref_ptr<osg::Node> TileTree::buildNode(unsigned int level, uint64_t prefix, std::size_t begin,
                                             std::size_t end)
 {
-    const bool leaf = end - begin <= _options.maxGlyphsPerTile || level == MORTON_LEVELS ||
+    const bool leaf = end - begin <= _writer.getOptions().maxGlyphsPerTile || level == MORTON_LEVELS ||
                       _codes[begin] == _codes[end - 1];
     if (leaf)
     {
         osg::ref_ptr<GlyphCloud> cloud = createLeaf(begin, end);
-        _done += end - begin;
-        if (_progress)
-            _progress(double(_done) / _codes.size());
+        _writer.addDone(end - begin);
         return cloud;
     }
     osg::ref_ptr<osg::Group> children = new osg::Group;
-    double childGlyphs = 0.0;
     std::size_t first = begin;
-    for (uint64_t octant = 0; octant < 8 && _error.empty(); ++octant)
+    for (uint64_t octant = 0; octant < 8; ++octant)
     {
         const uint64_t childPrefix = prefix << 3 | octant;
         const std::size_t last = static_cast<std::size_t>(
@@ -133,65 +216,34 @@ osg::ref_ptr<osg::Node> TileTree::buildNode(unsigned int level, uint64_t prefix,
         {
             osg::ref_ptr<osg::Node> child = buildNode(level + 1, childPrefix, first, last);
             if (!child)
-                break;
-            childGlyphs += glyphsDrawnBy(*child);
+                return nullptr;
             children->addChild(child.get());
         }
         first = last;
     }
-    if (!_error.empty())
-        return nullptr;
-
-    const osg::BoundingSphere bound = boundOf(begin, end);
-    const double nodeSize = _cube.size / double(uint64_t(1) << level);
-    // PIXEL_SIZE_ON_SCREEN ranges are the bounding sphere's diameter in pixels: this one is
-    // reached when a cell of the node's grid spans pixelsPerCell pixels.
-    const float refineAt =
-        static_cast<float>(2.0 * bound.radius() / nodeSize * _options.cellsPerAxis * _options.pixelsPerCell);
-    osg::ref_ptr<osg::PagedLOD> lod = new osg::PagedLOD;
-    lod->setName(childrenFileName(level, prefix));
-    lod->setRangeMode(osg::LOD::PIXEL_SIZE_ON_SCREEN);
-    lod->setCenterMode(osg::LOD::USER_DEFINED_CENTER);
-    lod->setCenter(bound.center());
-    lod->setRadius(bound.radius());
-    lod->setUserValue(CHILD_GLYPHS_USER_VALUE, childGlyphs);
-    lod->addChild(createRepresentatives(level, begin, end).get(), 0.0f, refineAt);
-    if (!_archive)
-    {
-        lod->addChild(children.get(), refineAt, FLT_MAX);
-        return lod;
-    }
-    const std::string file = childrenFileName(level, prefix);
-    setTileChecksum(*children);
-    const osgDB::ReaderWriter::WriteResult written = _archive->writeNode(*children, file);
-    if (!written.success())
-    {
-        _error = "cannot write " + file + " into the archive" +
-                 (written.message().empty() ? std::string() : ": " + written.message());
-        return nullptr;
-    }
-    lod->setFileName(1, file);
-    lod->setRange(1, refineAt, FLT_MAX);
-    return lod;
+    TileGlyphs representatives;
+    addRepresentatives(level, begin, end, representatives);
+    return _writer.createInnerNode(level, prefix, *children, boxOf(begin, end), representatives);
 }
 
-osg::BoundingSphere TileTree::boundOf(std::size_t begin, std::size_t end) const
+osg::BoundingBoxd TileTree::boxOf(std::size_t begin, std::size_t end) const
 {
+    const GlyphCloud& style = _writer.getStyle();
     const bool vectors = !_glyphs.vectors.empty();
-    const float headRatio = std::max(1.0f, _style.getArrowHeadRadiusRatio());
+    const float headRatio = std::max(1.0f, style.getArrowHeadRadiusRatio());
     osg::BoundingBoxd box;
     for (std::size_t i = begin; i < end; ++i)
     {
         double reach = _glyphs.radii[i];
         if (vectors)
-            reach = reach * headRatio + (_style.getUniformLength()
-                                             ? _style.getLengthScale()
-                                             : _glyphs.vectors[i].length() * _style.getLengthScale());
+            reach = reach * headRatio + (style.getUniformLength()
+                                             ? style.getLengthScale()
+                                             : _glyphs.vectors[i].length() * style.getLengthScale());
         const osg::Vec3d p = osg::Vec3d(_glyphs.positions[i]) + _glyphs.origin;
         box.expandBy(p - osg::Vec3d(reach, reach, reach));
         box.expandBy(p + osg::Vec3d(reach, reach, reach));
     }
-    return osg::BoundingSphere(osg::Vec3(box.center()), static_cast<float>(box.radius()));
+    return box;
 }
 
 osg::ref_ptr<GlyphCloud> TileTree::createLeaf(std::size_t begin, std::size_t end) const
@@ -201,19 +253,21 @@ osg::ref_ptr<GlyphCloud> TileTree::createLeaf(std::size_t begin, std::size_t end
         using Values = std::remove_const_t<std::remove_reference_t<decltype(values)>>;
         return values.empty() ? Values() : Values(values.begin() + begin, values.begin() + end);
     };
-    return createCloud(range(_glyphs.positions), range(_glyphs.radii), range(_glyphs.scalars),
-                       range(_glyphs.colors), range(_glyphs.vectors));
+    TileGlyphs leaf;
+    leaf.positions = range(_glyphs.positions);
+    leaf.radii = range(_glyphs.radii);
+    leaf.scalars = range(_glyphs.scalars);
+    leaf.colors = range(_glyphs.colors);
+    leaf.vectors = range(_glyphs.vectors);
+    return _writer.createCloud(leaf);
 }
 
-osg::ref_ptr<GlyphCloud> TileTree::createRepresentatives(unsigned int level, std::size_t begin,
-                                                         std::size_t end) const
+void TileTree::addRepresentatives(unsigned int level, std::size_t begin, std::size_t end,
+                                  TileGlyphs& representatives) const
 {
-    const unsigned int cellLevel = std::min(level + _cellLevels, MORTON_LEVELS);
+    const unsigned int cellLevel = std::min(level + _writer.getCellLevels(), MORTON_LEVELS);
     const unsigned int shift = 3 * (MORTON_LEVELS - cellLevel);
-    const double cellSize = _cube.size / double(uint64_t(1) << cellLevel);
-    std::vector<osg::Vec3f> positions, vectors;
-    std::vector<float> radii, scalars;
-    std::vector<osg::Vec4ub> colors;
+    const double cellSize = _writer.getCube().size / double(uint64_t(1) << cellLevel);
     for (std::size_t first = begin; first < end;)
     {
         const uint64_t cell = _codes[first] >> shift;
@@ -233,48 +287,8 @@ osg::ref_ptr<GlyphCloud> TileTree::createRepresentatives(unsigned int level, std
                 chosen = i;
             }
         }
-        positions.push_back(_glyphs.positions[chosen]);
-        radii.push_back(coverage.getRadius(cellSize));
-        if (!_glyphs.scalars.empty())
-            scalars.push_back(_glyphs.scalars[chosen]);
-        if (!_glyphs.colors.empty())
-            colors.push_back(_glyphs.colors[chosen]);
-        if (!_glyphs.vectors.empty())
-            vectors.push_back(_glyphs.vectors[chosen]);
+        representatives.append(_glyphs, chosen);
+        representatives.radii.back() = coverage.getRadius(cellSize);
         first = last;
     }
-    return createCloud(positions, radii, scalars, colors, vectors);
-}
-
-osg::ref_ptr<GlyphCloud> TileTree::createCloud(const std::vector<osg::Vec3f>& positions,
-                                               const std::vector<float>& radii,
-                                               const std::vector<float>& scalars,
-                                               const std::vector<osg::Vec4ub>& colors,
-                                               const std::vector<osg::Vec3f>& vectors) const
-{
-    osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud(_style, osg::CopyOp::SHALLOW_COPY);
-    cloud->setOrigin(_glyphs.origin);
-    // The positions last: the cloud is consistent after each call.
-    cloud->setPositions(new osg::Vec3Array);
-    if (std::all_of(radii.begin(), radii.end(), [&](float r) { return r == radii.front(); }))
-    {
-        cloud->setRadii(nullptr);
-        cloud->setRadius(radii.empty() ? _style.getRadius() : radii.front());
-    }
-    else
-        cloud->setRadii(new osg::FloatArray(radii.begin(), radii.end()));
-    if (_style.getColorMode() == GlyphColorMode::Scalar)
-    {
-        cloud->setScalars(new osg::FloatArray(scalars.begin(), scalars.end()));
-        if (_style.getScalarRangeIsAutomatic())
-            cloud->setScalarRange(_glyphs.scalarMin, _glyphs.scalarMax);
-        else
-            cloud->setScalarRange(_style.getScalarRangeMin(), _style.getScalarRangeMax());
-    }
-    else if (_style.getColorMode() == GlyphColorMode::RGBA)
-        cloud->setColors(new osg::Vec4ubArray(colors.begin(), colors.end()));
-    if (!vectors.empty())
-        cloud->setVectors(new osg::Vec3Array(vectors.begin(), vectors.end()));
-    cloud->setPositions(new osg::Vec3Array(positions.begin(), positions.end()));
-    return cloud;
 }

@@ -8,6 +8,7 @@
 
 #include <osgGlyphsTiles/TileBuilder>
 
+#include <osg/BoundingBox>
 #include <osgDB/Archive>
 
 #include <vector>
@@ -17,7 +18,7 @@ namespace osgGlyphsTiles
 namespace detail
 {
 
-/** The glyphs of a dataset, as arrays of equal length (colours and vectors where used). */
+/** Glyphs as arrays of equal length (colours and vectors where used). */
 struct TileGlyphs
 {
     osg::Vec3d origin;
@@ -27,46 +28,88 @@ struct TileGlyphs
     std::vector<osg::Vec4ub> colors;
     std::vector<osg::Vec3f> vectors;
     float scalarMin = 0.0f, scalarMax = 0.0f;
+
+    std::size_t size() const { return positions.size(); }
+    void clear();
+    /** Appends glyph i of other. */
+    void append(const TileGlyphs& other, std::size_t i);
 };
 
-/** The octree over a dataset's glyphs and the tiles made from it, root first. */
+/** What every tile of a dataset shares (style, octree cube, origin, colour range) and where the
+ * tiles go: each inner node's children are written into the archive as it is made, or, without
+ * an archive, kept in place. */
+class TileWriter
+{
+public:
+    TileWriter(const osgGlyphs::GlyphCloud& style, const TileOptions& options, const OctreeCube& cube,
+               const TileGlyphs& dataset, osgDB::Archive* archive, std::size_t totalGlyphs,
+               const TileBuilder::ProgressFunction& progress);
+
+    const osgGlyphs::GlyphCloud& getStyle() const { return _style; }
+    const TileOptions& getOptions() const { return _options; }
+    const OctreeCube& getCube() const { return _cube; }
+    /** log2 of TileOptions::cellsPerAxis. */
+    unsigned int getCellLevels() const { return _cellLevels; }
+
+    osg::ref_ptr<osgGlyphs::GlyphCloud> createCloud(const TileGlyphs& glyphs) const;
+
+    /** The PagedLOD of an inner node: its representatives until they would be too coarse, then
+     * its children (written into the archive now). Null with getError() set when writing fails. */
+    osg::ref_ptr<osg::Node> createInnerNode(unsigned int level, uint64_t prefix, osg::Group& children,
+                                            const osg::BoundingBoxd& box, const TileGlyphs& representatives);
+
+    /** Counts glyphs into leaves, for the progress. */
+    void addDone(std::size_t glyphs);
+
+    const std::string& getError() const { return _error; }
+
+private:
+    const osgGlyphs::GlyphCloud& _style;
+    TileOptions _options;
+    unsigned int _cellLevels;
+    OctreeCube _cube;
+    osg::Vec3d _origin;
+    float _scalarMin, _scalarMax;
+    osgDB::Archive* _archive;
+    std::size_t _total;
+    TileBuilder::ProgressFunction _progress;
+    std::size_t _done = 0;
+    std::string _error;
+};
+
+/** The octree over glyphs and the tiles made from it. The glyphs are a dataset, or a run of
+ * whole octree nodes of one (TileStream). */
 class TileTree
 {
 public:
     /** Puts the glyphs in the order of their octree (Morton order), which the tiles are cut from:
      * every later walk over them reads memory in order. */
-    TileTree(TileGlyphs& glyphs, const osgGlyphs::GlyphCloud& style, const TileOptions& options);
+    TileTree(TileGlyphs& glyphs, TileWriter& writer);
 
-    /** The root node; with an archive, each inner node's children are written into it as they
-     * are made, else kept in place. False with error on a write failure. */
-    osg::ref_ptr<osg::Node> build(osgDB::Archive* archive, const TileBuilder::ProgressFunction& progress,
-                                  std::string& error);
+    std::size_t size() const { return _codes.size(); }
 
-private:
+    /** The glyphs of the node at level with prefix: [first, second). */
+    std::pair<std::size_t, std::size_t> rangeOf(unsigned int level, uint64_t prefix) const;
+
+    /** The node of the glyphs [begin, end) at level with prefix, its descendants written; null
+     * when writing failed (the writer's getError()). */
     osg::ref_ptr<osg::Node> buildNode(unsigned int level, uint64_t prefix, std::size_t begin,
                                       std::size_t end);
+
+    /** Appends the representatives of the cells of a node at level that hold the glyphs
+     * [begin, end): whole cells, one representative each. */
+    void addRepresentatives(unsigned int level, std::size_t begin, std::size_t end,
+                            TileGlyphs& representatives) const;
+
+    /** The box of what the glyphs [begin, end) cover, in the clouds' parent's coordinates. */
+    osg::BoundingBoxd boxOf(std::size_t begin, std::size_t end) const;
+
+private:
     osg::ref_ptr<osgGlyphs::GlyphCloud> createLeaf(std::size_t begin, std::size_t end) const;
-    osg::ref_ptr<osgGlyphs::GlyphCloud> createRepresentatives(unsigned int level, std::size_t begin,
-                                                              std::size_t end) const;
-    osg::ref_ptr<osgGlyphs::GlyphCloud> createCloud(const std::vector<osg::Vec3f>& positions,
-                                                    const std::vector<float>& radii,
-                                                    const std::vector<float>& scalars,
-                                                    const std::vector<osg::Vec4ub>& colors,
-                                                    const std::vector<osg::Vec3f>& vectors) const;
-    /** The bounding sphere of the glyphs of a range, in the clouds' parent's coordinates. */
-    osg::BoundingSphere boundOf(std::size_t begin, std::size_t end) const;
 
     const TileGlyphs& _glyphs;
-    const osgGlyphs::GlyphCloud& _style;
-    TileOptions _options;
-    unsigned int _cellLevels = 5; // log2 of cellsPerAxis
-    OctreeCube _cube;
+    TileWriter& _writer;
     std::vector<uint64_t> _codes; // of the glyphs, in their (sorted) order
-
-    osgDB::Archive* _archive = nullptr;
-    TileBuilder::ProgressFunction _progress;
-    std::size_t _done = 0;
-    std::string _error;
 };
 
 }

@@ -1,0 +1,131 @@
+// Datasets larger than memory: a TileBuilder that holds fewer glyphs than the dataset has sorts
+// them through temporary files and writes the archive byte for byte as one that held them all.
+
+#include "RenderHarness.h"
+
+#include <osgGlyphsData/RandomCloud>
+#include <osgGlyphsTiles/TileBuilder>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <ostream>
+#include <string>
+
+using namespace osgGlyphsTest;
+using osgGlyphs::GlyphCloud;
+
+namespace
+{
+
+const unsigned int GLYPHS = 60000;
+const unsigned int BATCH = 7000;
+
+osg::ref_ptr<GlyphCloud> randomBatch(osgGlyphs::GlyphShape shape, bool rgba, unsigned int seed)
+{
+    osgGlyphsData::RandomCloudOptions options;
+    options.count = BATCH;
+    options.shape = shape;
+    options.seed = seed;
+    options.radius = 0.01f;
+    osg::ref_ptr<GlyphCloud> cloud = osgGlyphsData::createRandomCloud(options);
+    if (rgba)
+    {
+        osg::ref_ptr<osg::Vec4ubArray> colors = new osg::Vec4ubArray;
+        for (unsigned int i = 0; i < cloud->getNumGlyphs(); ++i)
+            colors->push_back(osg::Vec4ub(i * 7, i * 13, i * 29, 255));
+        cloud->setColors(colors.get());
+    }
+    return cloud;
+}
+
+std::string readBytes(const std::string& path)
+{
+    std::ifstream file(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+}
+
+std::size_t filesIn(const std::filesystem::path& folder)
+{
+    return static_cast<std::size_t>(
+        std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator()));
+}
+
+struct Dataset
+{
+    osgGlyphs::GlyphShape shape;
+    bool rgba;
+    const char* name;
+};
+
+void PrintTo(const Dataset& dataset, std::ostream* out)
+{
+    *out << dataset.name;
+}
+
+class TilesLargerThanMemory : public ::testing::TestWithParam<Dataset>
+{
+};
+
+/** Writes the dataset's tiles holding at most maxInMemory glyphs; temporary files go to folder. */
+std::string writeArchive(const Dataset& dataset, std::size_t maxInMemory, const std::filesystem::path& folder,
+                         const std::string& name, std::size_t* filesDuringBuild = nullptr)
+{
+    osgGlyphsTiles::TileOptions options;
+    options.maxGlyphsPerTile = 1000;
+    options.cellsPerAxis = 8;
+    options.maxGlyphsInMemory = maxInMemory;
+    options.temporaryDirectory = folder.string();
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder =
+        new osgGlyphsTiles::TileBuilder(*randomBatch(dataset.shape, dataset.rgba, 1), options);
+    std::string error;
+    for (unsigned int first = 0; first < GLYPHS; first += BATCH)
+        EXPECT_TRUE(builder->addGlyphs(*randomBatch(dataset.shape, dataset.rgba, 1 + first), error)) << error;
+    EXPECT_EQ(builder->getNumGlyphs(), std::size_t(GLYPHS + BATCH - 1) / BATCH * BATCH);
+    const std::string path = outputPath(name + ".osga");
+    EXPECT_TRUE(builder->write(path, error)) << error;
+    if (filesDuringBuild)
+        *filesDuringBuild = filesIn(folder);
+    return readBytes(path);
+}
+
+TEST_P(TilesLargerThanMemory, WriteTheArchiveOfAllGlyphsInMemory)
+{
+    const Dataset dataset = GetParam();
+    const std::filesystem::path folder = outputPath(std::string("tiles_temporary_") + dataset.name);
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    const std::string whole =
+        writeArchive(dataset, GLYPHS * 2, folder, std::string("tiles_whole_") + dataset.name);
+    std::size_t spilled = 0;
+    const std::string streamed =
+        writeArchive(dataset, 4000, folder, std::string("tiles_streamed_") + dataset.name, &spilled);
+    ASSERT_GT(whole.size(), 100000u);
+    EXPECT_TRUE(whole == streamed) << "the archive built 4000 glyphs at a time differs (" << streamed.size()
+                                   << " bytes against " << whole.size() << ")";
+    // While the builder lived, its one spill file; the partitions' files were gone after writing.
+    EXPECT_EQ(spilled, 1u);
+    EXPECT_EQ(filesIn(folder), 0u) << "temporary files left in " << folder;
+}
+
+INSTANTIATE_TEST_SUITE_P(Datasets, TilesLargerThanMemory,
+                         ::testing::Values(Dataset{osgGlyphs::GlyphShape::Sphere, false, "spheres"},
+                                           Dataset{osgGlyphs::GlyphShape::Arrow, false, "arrows"},
+                                           Dataset{osgGlyphs::GlyphShape::Sphere, true, "rgba"}),
+                         [](const ::testing::TestParamInfo<Dataset>& instance)
+                         { return std::string(instance.param.name); });
+
+TEST(TilesLargerThanMemory, AnUnwritableTemporaryFolderIsOneClearError)
+{
+    osgGlyphsTiles::TileOptions options;
+    options.maxGlyphsInMemory = 1000;
+    options.temporaryDirectory = "/nonexistent/osgglyphs-temporary";
+    osg::ref_ptr<GlyphCloud> cloud = randomBatch(osgGlyphs::GlyphShape::Sphere, false, 1);
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder = new osgGlyphsTiles::TileBuilder(*cloud, options);
+    std::string error;
+    EXPECT_FALSE(builder->addGlyphs(*cloud, error));
+    EXPECT_NE(error.find("/nonexistent/osgglyphs-temporary/"), std::string::npos) << error;
+    EXPECT_NE(error.find("cannot create a temporary file"), std::string::npos) << error;
+}
+
+}
