@@ -2,10 +2,12 @@
 // archive (.osga) whose master file is the root: `osgglyphviewer out.osga`, `osgviewer out.osga`.
 
 #include "ConvertProgress.h"
+#include "SequentialShares.h"
 
 #include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsData/PointReader>
 #include <osgGlyphsData/RandomCloud>
+#include <osgGlyphsData/SharedDataset>
 #include <osgGlyphsTiles/TileBuilder>
 
 #include <osg/ArgumentParser>
@@ -14,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -25,6 +28,9 @@ const char* const PROGRAM = "osgglyphconvert";
 
 /** Glyphs of a --random dataset generated at a time. */
 const unsigned int RANDOM_BATCH = 1u << 20;
+
+/** Passes over the parts of a file larger than memory before giving up on its mapping settling. */
+const unsigned int MAX_SHARE_PASSES = 8;
 
 struct ConvertOptions
 {
@@ -194,43 +200,99 @@ osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildRandom(const ConvertOptions& opti
     return builder;
 }
 
-/** The tiles of one frame of a point file. */
-osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildFromFile(const ConvertOptions& options,
-                                                        ConvertProgress& progress, std::string& error)
+/** Shares a file is read in so that each holds at most about maxGlyphs points: its size over 12
+ * bytes, the least a point takes in a binary file (three floats). */
+unsigned int sharesOf(const std::string& path, std::size_t maxGlyphs)
+{
+    std::error_code error;
+    const double bytes = static_cast<double>(std::filesystem::file_size(path, error));
+    if (error)
+        return 1;
+    return static_cast<unsigned int>(std::clamp(std::ceil(bytes / 12.0 / double(maxGlyphs)), 1.0, 65536.0));
+}
+
+/** Adds the glyphs of one frame of a point file, or of one share of it under shares (which must
+ * then be given beginShare() for it), to builder, which is made from the first. */
+bool addFromFile(const ConvertOptions& options, ConvertProgress& progress, SequentialShares* shares,
+                 osg::ref_ptr<osgGlyphsTiles::TileBuilder>& builder, std::string& error)
 {
     osgGlyphsData::PointReadOptions read;
     read.format = options.format;
-    progress.start("reading " + options.input);
     read.progress = [&progress](uint64_t done, uint64_t total)
     { progress.update(total ? double(done) / total : 0.0); };
     read.warning = [](const std::string& warning)
     { std::cerr << PROGRAM << ": warning: " << warning << std::endl; };
+    if (shares)
+        read.share = shares->getShare();
     osg::ref_ptr<osgGlyphsData::PointDataset> dataset =
         osgGlyphsData::readPointFile(options.input, read, error);
-    if (!dataset)
-        return nullptr;
+    if (!dataset || (shares && !osgGlyphsData::unifyShares(*dataset, *shares, error)))
+        return false;
     if (options.frame >= dataset->getNumFrames())
     {
         error = options.input + ": --frame " + std::to_string(options.frame) + ": the file has " +
                 std::to_string(dataset->getNumFrames()) + " frame(s) with points";
-        return nullptr;
+        return false;
     }
     osgGlyphsData::GlyphMapper mapper(options.mapping);
+    mapper.setReduction(shares);
     if (!mapper.prepare(*dataset, options.frame, error))
-        return nullptr;
+        return false;
+    // Under shares, a pass that has already given the mapping other values than the previous pass
+    // is not the last, and its glyphs are not kept.
+    if (shares && !shares->isSettled())
+        return true;
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = mapper.createCloud(*dataset->getFrame(options.frame), error);
     if (!cloud)
-        return nullptr;
-    std::cerr << PROGRAM << ": " << mapper.describe() << std::endl;
-    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder =
-        new osgGlyphsTiles::TileBuilder(*cloud, options.tiles);
-    builder->setColorTitle(mapper.getColorKey().title);
+        return false;
+    if (!builder)
+    {
+        std::cerr << PROGRAM << ": " << mapper.describe() << std::endl;
+        builder = new osgGlyphsTiles::TileBuilder(*cloud, options.tiles);
+        builder->setColorTitle(mapper.getColorKey().title);
+    }
     if (!builder->addGlyphs(*cloud, error))
     {
         error = options.input + ": " + error;
-        return nullptr;
+        return false;
     }
-    return builder;
+    return true;
+}
+
+/** The tiles of one frame of a point file, read whole or, when larger than the glyphs held in
+ * memory, in shares over a few passes (see SequentialShares). */
+osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildFromFile(const ConvertOptions& options,
+                                                        ConvertProgress& progress, std::string& error)
+{
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder;
+    const unsigned int count = sharesOf(options.input, options.tiles.maxGlyphsInMemory);
+    if (count == 1)
+    {
+        progress.start("reading " + options.input);
+        return addFromFile(options, progress, nullptr, builder, error) ? builder : nullptr;
+    }
+    osg::ref_ptr<SequentialShares> shares = new SequentialShares(count);
+    for (unsigned int pass = 1; pass <= MAX_SHARE_PASSES; ++pass)
+    {
+        builder = nullptr;
+        for (unsigned int index = 0; index < count; ++index)
+        {
+            progress.start("reading " + options.input + ", pass " + std::to_string(pass) + ", part " +
+                           std::to_string(index + 1) + " of " + std::to_string(count));
+            shares->beginShare(index);
+            if (!addFromFile(options, progress, shares.get(), builder, error))
+                return nullptr;
+        }
+        if (shares->endPass() && builder)
+        {
+            std::cerr << PROGRAM << ": read " << options.input << " in " << count << " parts, " << pass
+                      << (pass == 1 ? " pass" : " passes") << std::endl;
+            return builder;
+        }
+    }
+    error = options.input + ": the mapping of its " + std::to_string(count) + " parts did not settle in " +
+            std::to_string(MAX_SHARE_PASSES) + " passes (try --radius and --range)";
+    return nullptr;
 }
 
 }

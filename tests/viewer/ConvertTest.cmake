@@ -1,7 +1,7 @@
 # osgglyphconvert (ctest -L viewer): a random dataset and a point file into tile archives that
 # osgglyphviewer renders; bad command lines fail with one line.
 #   cmake -DCONVERT=<osgglyphconvert> -DVIEWER=<osgglyphviewer> -DCHECK=<osgglyphviewer_image_check>
-#         -DDATA_DIR=<data> -DWORK_DIR=<scratch> -P ConvertTest.cmake
+#         -DDATA_DIR=<data> -DSAMPLES_DIR=<share/data> -DWORK_DIR=<scratch> -P ConvertTest.cmake
 cmake_minimum_required(VERSION 3.25)
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -42,6 +42,30 @@ run("${CHECK}" coverage random.png 0.05)
 if(NOT result EQUAL 0)
     message(FATAL_ERROR "random.png shows no glyphs")
 endif()
+
+# Files larger than the glyphs held in memory are read in parts, over passes until the mapping
+# settles, and cut into tiles through temporary files: the archive is the one read whole.
+foreach(sample "melt4k.lammpstrj" "galaxy.vtk;--glyph;arrow" "water64.xyz" "torus.ply" "probes.csv;--color-by;density")
+    list(POP_FRONT sample file)
+    set(options ${sample})
+    run("${CONVERT}" "${SAMPLES_DIR}/${file}" ${options} --tile-glyphs 50 --tile-cells 4 whole.osga)
+    if(NOT result EQUAL 0)
+        message(FATAL_ERROR "the conversion of ${file} failed")
+    endif()
+    run("${CONVERT}" "${SAMPLES_DIR}/${file}" ${options} --tile-glyphs 50 --tile-cells 4 --memory-glyphs 500 parts.osga)
+    if(NOT result EQUAL 0 OR NOT err MATCHES "read [^\n]*${file} in [0-9]+ parts, [0-9]+ pass")
+        message(FATAL_ERROR "${file} was not read in parts")
+    endif()
+    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files whole.osga parts.osga
+        WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE different)
+    if(different)
+        message(FATAL_ERROR "${file} read in parts gave another archive than read whole")
+    endif()
+    file(GLOB leftovers "${WORK_DIR}/osgglyphs-tiles-*")
+    if(leftovers)
+        message(FATAL_ERROR "temporary files left: ${leftovers}")
+    endif()
+endforeach()
 
 # A LAMMPS dump coloured by a column, as cones.
 run("${CONVERT}" "${DATA_DIR}/spheres.lammpstrj" --glyph cone --color-by vx dump.osga)
