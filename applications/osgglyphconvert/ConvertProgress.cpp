@@ -23,9 +23,12 @@ void ConvertProgress::update(double fraction)
     if (elapsed < 1.0 || std::chrono::duration<double>(now - _lastShown).count() < 1.0)
         return;
     _lastShown = now;
-    const double left = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
-    std::fprintf(stderr, "%s%s: %s %3d%% (about %.0f s left)%s", _terminal ? "\r" : "", _program.c_str(),
-                 _stage.c_str(), static_cast<int>(100.0 * fraction), left, _terminal ? "   " : "\n");
+    // No estimate from the first percent: it would mostly be the stage's start-up.
+    char left[64] = "";
+    if (fraction >= 0.01)
+        std::snprintf(left, sizeof(left), " (about %.0f s left)", elapsed * (1.0 - fraction) / fraction);
+    std::fprintf(stderr, "%s%s: %s %3d%%%s%s", _terminal ? "\r" : "", _program.c_str(), _stage.c_str(),
+                 static_cast<int>(100.0 * fraction), left, _terminal ? "   " : "\n");
     std::fflush(stderr);
     _lineOpen = _terminal;
 }

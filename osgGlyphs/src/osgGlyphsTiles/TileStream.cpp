@@ -36,19 +36,29 @@ struct OpenNode
     }
 };
 
-/** The glyphs of the spill, then the tail, a block at a time. */
-bool readGlyphs(TileSpill& spill, const TileGlyphs& tail,
+/** The share of the progress of the passes over every glyph that come before the tiles: counting,
+ * then sorting into partitions (measured: about a tenth of the time, mostly the sorting). */
+const double COUNTED = 0.02, DISTRIBUTED = 0.12;
+
+/** The glyphs of the spill, then the tail, a block at a time, reporting progress from first to
+ * last of the writer's. */
+bool readGlyphs(TileSpill& spill, const TileGlyphs& tail, TileWriter& writer, double first, double last,
                 const std::function<void(const TileGlyphs& block)>& visit, std::string& error)
 {
+    const double total = double(spill.size() + tail.size());
+    std::size_t done = 0;
     if (!spill.read(
-            [&visit](const TileGlyphs& block)
+            [&](const TileGlyphs& block)
             {
                 visit(block);
+                done += block.size();
+                writer.setProgress(first + (last - first) * done / total);
                 return true;
             },
             error))
         return false;
     visit(tail);
+    writer.setProgress(last);
     return true;
 }
 
@@ -67,7 +77,7 @@ public:
         const unsigned int shift = 3 * (MORTON_LEVELS - _countLevel);
         const OctreeCube& cube = _writer.getCube();
         if (!readGlyphs(
-                spill, tail,
+                spill, tail, _writer, 0.0, COUNTED,
                 [&](const TileGlyphs& block)
                 {
                     for (const osg::Vec3f& p : block.positions)
@@ -116,7 +126,7 @@ public:
         std::vector<std::vector<unsigned int>> indices(_partitions.size());
         bool written = true;
         if (!readGlyphs(
-                spill, tail,
+                spill, tail, _writer, COUNTED, DISTRIBUTED,
                 [&](const TileGlyphs& block)
                 {
                     for (auto& list : indices)

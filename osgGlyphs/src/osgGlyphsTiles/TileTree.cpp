@@ -80,7 +80,14 @@ void TileWriter::addDone(std::size_t glyphs)
 {
     _done += glyphs;
     if (_progress && _total)
-        _progress(double(_done) / _total);
+        _progress(_leavesStart + (1.0 - _leavesStart) * double(_done) / _total);
+}
+
+void TileWriter::setProgress(double fraction)
+{
+    _leavesStart = fraction;
+    if (_progress)
+        _progress(fraction);
 }
 
 osg::ref_ptr<osg::Node> TileWriter::createInnerNode(unsigned int level, uint64_t prefix, osg::Group& children,

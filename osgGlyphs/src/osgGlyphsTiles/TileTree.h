@@ -60,6 +60,9 @@ public:
 
     /** Counts glyphs into leaves, for the progress. */
     void addDone(std::size_t glyphs);
+    /** Reports the progress of work before the leaves (TileStream's passes), which then count
+     * from there to the end. */
+    void setProgress(double fraction);
 
     const std::string& getError() const { return _error; }
 
@@ -74,6 +77,7 @@ private:
     std::size_t _total;
     TileBuilder::ProgressFunction _progress;
     std::size_t _done = 0;
+    double _leavesStart = 0.0;
     std::string _error;
 };
 
