@@ -157,9 +157,11 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
         times.push_back(millisecondsSince(frameStart));
         if (frame == 0)
         {
+            const double firstPicture = millisecondsSince(start);
             const auto pagingStart = std::chrono::steady_clock::now();
             if (const unsigned int pagingFrames = settlePaging(*viewer))
-                std::cout << PROGRAM << ": paged in tiles over " << pagingFrames << " more frames in "
+                std::cout << PROGRAM << ": the first picture took " << firstPicture
+                          << " ms from the start; paged in tiles over " << pagingFrames << " more frames in "
                           << millisecondsSince(pagingStart) << " ms" << std::endl;
         }
         error = osgGlyphs::GlyphStateCache::instance()->getProgramError();

@@ -176,3 +176,37 @@ TEST(CullingRenderEdits, ChunksOutsideTheViewAreSkipped)
     EXPECT_LT(statistics.glyphsSubmitted, COUNT / 2);
     EXPECT_EQ(countDifferences(culled, renderWith(renderer, scene.get(), *cloud, GlyphCulling::Off)), 0);
 }
+
+TEST(CullingRenderEdits, ACloudBehindANearerOneInTheFrontToBackBinIsSkippedWhole)
+{
+    Renderer renderer(WIDTH, HEIGHT);
+    renderer.setPerspective(40.0, 0.5, 6.0);
+    renderer.setLookAt(osg::Vec3d(0.5, -2.0, 0.5), osg::Vec3d(0.5, 0.5, 0.5), osg::Vec3d(0.0, 0.0, 1.0));
+    osg::ref_ptr<GlyphCloud> front = createDenseCloud(GlyphShape::Sphere);
+    // A smaller cloud behind the cube, wholly inside its silhouette.
+    osg::ref_ptr<GlyphCloud> back = createDenseCloud(GlyphShape::Cone);
+    osg::Vec3Array& positions = *back->getPositions();
+    for (osg::Vec3& p : positions)
+        p = osg::Vec3(0.5f, 1.6f, 0.5f) + osg::Vec3(p.x() - 0.5f, p.y(), p.z() - 0.5f) * 0.4f;
+    positions.dirty();
+    back->dirtyGlyphs();
+    osg::ref_ptr<osg::Group> scene = createScene(back.get());
+    osg::ref_ptr<osg::Geode> frontGeode = new osg::Geode;
+    frontGeode->addDrawable(front.get());
+    scene->addChild(frontGeode.get());
+    scene->getOrCreateStateSet()->setRenderBinDetails(0, osgGlyphs::FRONT_TO_BACK_BIN);
+
+    front->setCulling(GlyphCulling::Occlusion);
+    const Frame culled = renderWith(renderer, scene.get(), *back, GlyphCulling::Occlusion);
+    const osgGlyphs::GlyphCullingStatistics statistics = statisticsOf(*back, renderer);
+    EXPECT_EQ(statistics.chunksOutsideView, 0u);
+    EXPECT_EQ(statistics.glyphsSubmitted, 0u)
+        << "of " << statistics.chunks << " chunks, " << statistics.chunksOccluded << " found hidden";
+    front->setCulling(GlyphCulling::Frustum);
+    EXPECT_EQ(countDifferences(culled, renderWith(renderer, scene.get(), *back, GlyphCulling::Frustum)), 0);
+
+    // Alone, the back cloud shows: the test above is no accident of the view.
+    scene->removeChild(frontGeode.get());
+    renderWith(renderer, scene.get(), *back, GlyphCulling::Occlusion);
+    EXPECT_GT(statisticsOf(*back, renderer).glyphsSubmitted, COUNT / 10);
+}

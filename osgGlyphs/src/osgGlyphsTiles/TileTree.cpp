@@ -1,5 +1,7 @@
 #include "TileTree.h"
 
+#include <osgGlyphs/GlyphCulling>
+
 #include <osgGlyphsTiles/TileBudget>
 #include <osgGlyphsTiles/TileChecksum>
 
@@ -135,6 +137,8 @@ osg::ref_ptr<GlyphCloud> TileWriter::createCloud(const TileGlyphs& glyphs) const
     const std::vector<float>& radii = glyphs.radii;
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud(_style, osg::CopyOp::SHALLOW_COPY);
     cloud->setOrigin(_origin);
+    // Nearest first: each tile's culling then skips what nearer tiles hide.
+    cloud->getOrCreateStateSet()->setRenderBinDetails(0, osgGlyphs::FRONT_TO_BACK_BIN);
     // The positions last: the cloud is consistent after each call.
     cloud->setPositions(new osg::Vec3Array);
     if (std::all_of(radii.begin(), radii.end(), [&](float r) { return r == radii.front(); }))

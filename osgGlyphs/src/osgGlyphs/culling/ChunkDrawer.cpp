@@ -202,6 +202,11 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
     }
 
     OcclusionContext* context = osg::get<OcclusionContext>(state.getContextID());
+    // After another cloud in the same camera and frame, even the first round is tested: the
+    // depth buffer already holds that cloud's glyphs, nearer tiles of a paged dataset say.
+    const osg::FrameStamp* frameStamp = state.getFrameStamp();
+    const bool drawnBefore =
+        frameStamp && context->recordDraw(renderInfo.getCurrentCamera(), frameStamp->getFrameNumber());
     bool testing = false;
     size_t begin = 0;
     // The first round lays down the cloud's front over the view.
@@ -213,7 +218,7 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
     {
         if (begin >= inView.size())
             break;
-        if (begin > 0)
+        if (begin > 0 || drawnBefore)
         {
             // What the rounds so far drew is what this one is tested against.
             ++statistics.depthReadbacks;

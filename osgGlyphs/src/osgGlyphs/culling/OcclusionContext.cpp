@@ -43,6 +43,14 @@ bool OcclusionContext::readDepth(osg::State& state, const osg::Viewport& viewpor
     return true;
 }
 
+bool OcclusionContext::recordDraw(const osg::Camera* camera, unsigned int frame)
+{
+    const bool drawnBefore = camera && camera == _lastCamera && frame == _lastFrame;
+    _lastCamera = camera;
+    _lastFrame = frame;
+    return drawnBefore;
+}
+
 int OcclusionContext::applyPyramidTexture(osg::State& state)
 {
     const int levels = std::min(_pyramid.getNumLevels() - 1, MAX_PYRAMID_TEXTURE_LEVELS);

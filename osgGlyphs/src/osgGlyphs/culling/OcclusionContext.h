@@ -38,6 +38,10 @@ public:
 
     const DepthPyramid& getPyramid() const { return _pyramid; }
 
+    /** Records that a cloud draws into camera in frame; true when another one already did, so
+     * that the depth buffer holds its glyphs (tiles of a paged dataset, clouds side by side). */
+    bool recordDraw(const osg::Camera* camera, unsigned int frame);
+
     /** Uploads the pyramid and binds it on DEPTH_PYRAMID_TEXTURE_UNIT; returns the levels in the
      * atlas (0: nothing to test against), whose rectangles (x, y, width, height) getAtlasLevels()
      * lists: entry j holds the pyramid's level j + 1. */
@@ -53,6 +57,8 @@ protected:
     void release();
 
     DepthPyramid _pyramid;
+    const osg::Camera* _lastCamera = nullptr; // compared, never followed
+    unsigned int _lastFrame = 0;
     std::vector<GLint> _atlasLevels;
     osg::ref_ptr<osg::Image> _image;
     osg::ref_ptr<osg::Texture2D> _texture;
