@@ -156,14 +156,7 @@ public:
             if (!_partitions[p]->read(
                     [&glyphs](const TileGlyphs& block)
                     {
-                        glyphs.positions.insert(glyphs.positions.end(), block.positions.begin(),
-                                                block.positions.end());
-                        glyphs.radii.insert(glyphs.radii.end(), block.radii.begin(), block.radii.end());
-                        glyphs.scalars.insert(glyphs.scalars.end(), block.scalars.begin(),
-                                              block.scalars.end());
-                        glyphs.colors.insert(glyphs.colors.end(), block.colors.begin(), block.colors.end());
-                        glyphs.vectors.insert(glyphs.vectors.end(), block.vectors.begin(),
-                                              block.vectors.end());
+                        glyphs.append(block);
                         return true;
                     },
                     error))

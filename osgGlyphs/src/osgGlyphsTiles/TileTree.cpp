@@ -69,13 +69,27 @@ void TileGlyphs::append(const TileGlyphs& other, std::size_t i)
         vectors.push_back(other.vectors[i]);
 }
 
+void TileGlyphs::append(const TileGlyphs& other)
+{
+    positions.insert(positions.end(), other.positions.begin(), other.positions.end());
+    radii.insert(radii.end(), other.radii.begin(), other.radii.end());
+    scalars.insert(scalars.end(), other.scalars.begin(), other.scalars.end());
+    colors.insert(colors.end(), other.colors.begin(), other.colors.end());
+    vectors.insert(vectors.end(), other.vectors.begin(), other.vectors.end());
+}
+
 TileWriter::TileWriter(const GlyphCloud& style, const TileOptions& options, const OctreeCube& cube,
                        const TileGlyphs& dataset, osgDB::Archive* archive, std::size_t totalGlyphs,
                        const TileBuilder::ProgressFunction& progress)
     : _style(style), _options(options), _cellLevels(log2Of(options.cellsPerAxis)), _cube(cube),
       _origin(dataset.origin), _scalarMin(dataset.scalarMin), _scalarMax(dataset.scalarMax),
+      _tileStateSet(style.getStateSet() ? new osg::StateSet(*style.getStateSet(), osg::CopyOp::SHALLOW_COPY)
+                                        : new osg::StateSet),
       _archive(archive), _total(totalGlyphs), _progress(progress)
 {
+    // Nearest first: each tile's culling then skips what nearer tiles hide. A copy of the style's
+    // state: the caller's cloud keeps its own bin.
+    _tileStateSet->setRenderBinDetails(0, osgGlyphs::FRONT_TO_BACK_BIN);
 }
 
 void TileWriter::addDone(std::size_t glyphs)
@@ -137,8 +151,7 @@ osg::ref_ptr<GlyphCloud> TileWriter::createCloud(const TileGlyphs& glyphs) const
     const std::vector<float>& radii = glyphs.radii;
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud(_style, osg::CopyOp::SHALLOW_COPY);
     cloud->setOrigin(_origin);
-    // Nearest first: each tile's culling then skips what nearer tiles hide.
-    cloud->getOrCreateStateSet()->setRenderBinDetails(0, osgGlyphs::FRONT_TO_BACK_BIN);
+    cloud->setStateSet(_tileStateSet.get());
     // The positions last: the cloud is consistent after each call.
     cloud->setPositions(new osg::Vec3Array);
     if (std::all_of(radii.begin(), radii.end(), [&](float r) { return r == radii.front(); }))

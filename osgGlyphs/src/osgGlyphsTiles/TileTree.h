@@ -33,6 +33,8 @@ struct TileGlyphs
     void clear();
     /** Appends glyph i of other. */
     void append(const TileGlyphs& other, std::size_t i);
+    /** Appends every glyph of other. */
+    void append(const TileGlyphs& other);
 };
 
 /** What every tile of a dataset shares (style, octree cube, origin, colour range) and where the
@@ -73,6 +75,7 @@ private:
     OctreeCube _cube;
     osg::Vec3d _origin;
     float _scalarMin, _scalarMax;
+    osg::ref_ptr<osg::StateSet> _tileStateSet; // the style's, in the front-to-back bin
     osgDB::Archive* _archive;
     std::size_t _total;
     TileBuilder::ProgressFunction _progress;
