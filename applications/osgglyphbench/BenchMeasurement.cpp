@@ -201,6 +201,7 @@ bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings
     result.ambientOcclusion = c.ambientOcclusion;
     result.screenEffects = c.screenEffects;
     result.opacity = c.opacity;
+    result.transparency = c.transparency;
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud =
         createCloud(c, radius, settings, result.bytesPerGlyph, result.occlusionSeconds);
@@ -211,6 +212,7 @@ bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings
         cloud->setOpacity(c.opacity);
         osg::ref_ptr<osgGlyphs::DepthPeeling> peeling = new osgGlyphs::DepthPeeling;
         peeling->setNumLayers(settings.peelLayers);
+        peeling->setMethod(c.transparency);
         peeling->addChild(geode.get());
         content = peeling;
     }

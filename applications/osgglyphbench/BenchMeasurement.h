@@ -19,6 +19,7 @@ struct BenchCase
     bool ambientOcclusion = false;
     ScreenEffectsChoice screenEffects = ScreenEffectsChoice::Off;
     float opacity = 1.0f;
+    osgGlyphs::DepthPeeling::Method transparency = osgGlyphs::DepthPeeling::K_BUFFER;
 };
 
 /** One measured case: a row of the CSV. */
@@ -45,6 +46,7 @@ struct BenchResult
     double occlusionSeconds = 0.0;
     ScreenEffectsChoice screenEffects = ScreenEffectsChoice::Off;
     float opacity = 1.0f;
+    osgGlyphs::DepthPeeling::Method transparency = osgGlyphs::DepthPeeling::K_BUFFER;
 };
 
 /** Measures one case, a random cloud of glyphs of this radius, in a fresh headless viewer: one

@@ -129,6 +129,18 @@ bool parseOpacity(const std::string& text, float& opacity)
     return true;
 }
 
+bool parseTransparency(const std::string& text, osgGlyphs::DepthPeeling::Method& method)
+{
+    for (osgGlyphs::DepthPeeling::Method candidate :
+         {osgGlyphs::DepthPeeling::K_BUFFER, osgGlyphs::DepthPeeling::PEEL_PASSES})
+        if (text == getTransparencyName(candidate))
+        {
+            method = candidate;
+            return true;
+        }
+    return false;
+}
+
 bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
 {
     std::string text;
@@ -156,6 +168,10 @@ bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
         return false;
     if (arguments.read("--opacity", text) &&
         !parseList(arguments, "--opacity", text, "numbers above 0 up to 1", parseOpacity, settings.opacities))
+        return false;
+    if (arguments.read("--transparency", text) &&
+        !parseList(arguments, "--transparency", text, "k-buffer, peel", parseTransparency,
+                   settings.transparencyMethods))
         return false;
     if (arguments.read("--data-path", text) && !parseDataPath(text, settings.dataPath))
     {
@@ -200,6 +216,11 @@ void readValues(osg::ArgumentParser& arguments, BenchSettings& settings)
         arguments.reportError("--peel-layers: at least one layer");
 }
 
+}
+
+const char* getTransparencyName(osgGlyphs::DepthPeeling::Method method)
+{
+    return method == osgGlyphs::DepthPeeling::K_BUFFER ? "k-buffer" : "peel";
 }
 
 const char* getScreenEffectsName(ScreenEffectsChoice choice)
@@ -270,6 +291,9 @@ void describeBenchOptions(osg::ApplicationUsage& usage)
         "Cloud opacities (default 1): below 1 the cloud is transparent, under an osgGlyphs::DepthPeeling "
         "node, so that 1,0.5 gives the cost of transparency against the opaque frame.");
     usage.addCommandLineOption("--peel-layers <k>", "The layers depth peeling draws (default 4).");
+    usage.addCommandLineOption("--transparency <m1,m2,...>",
+                               "How transparent clouds are sorted: k-buffer (the default: one pass into "
+                               "per-pixel lists) or peel (a pass per layer).");
     usage.addCommandLineOption("--equal-coverage",
                                "Give cones, arrows and cylinders the radius at which they cover as much of "
                                "the view as spheres of the radius above, at the same n (from one untimed "

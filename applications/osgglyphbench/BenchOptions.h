@@ -38,6 +38,9 @@ enum class ScreenEffectsChoice
 };
 
 /** "off", "ao", "outline" or "both", as --screen-effects and the CSV spell it. */
+/** "k-buffer" or "peel". */
+const char* getTransparencyName(osgGlyphs::DepthPeeling::Method method);
+
 const char* getScreenEffectsName(ScreenEffectsChoice choice);
 
 /** Everything the command line sets. */
@@ -58,6 +61,8 @@ struct BenchSettings
     std::vector<ScreenEffectsChoice> screenEffects = {ScreenEffectsChoice::Off};
     /** The clouds' opacities (--opacity): 1 draws them opaque, less under a DepthPeeling node. */
     std::vector<float> opacities = {1.0f};
+    /** How transparent clouds are sorted (--transparency): DepthPeeling's methods. */
+    std::vector<osgGlyphs::DepthPeeling::Method> transparencyMethods = {osgGlyphs::DepthPeeling::K_BUFFER};
     unsigned int peelLayers = osgGlyphs::DepthPeeling::DEFAULT_NUM_LAYERS; // --peel-layers
     bool equalCoverage = false;
     unsigned int seed = 1;

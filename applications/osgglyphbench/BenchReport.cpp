@@ -7,7 +7,7 @@
 
 const char* const CSV_HEADER = "technique,shape,n,width,height,frames,ms_median,ms_min,ms_max,first_frame_ms,"
                                "gpu_bytes_per_glyph,data_path,coverage,radius,attributes,culling,overdraw,"
-                               "submitted,ao,ao_seconds,screen_effects,opacity";
+                               "submitted,ao,ao_seconds,screen_effects,opacity,transparency";
 
 namespace
 {
@@ -47,7 +47,8 @@ void printSummaryRow(const BenchResult& result, const BenchResult* floor, const 
               << result.n << std::setw(18) << result.technique << std::setw(11)
               << (std::string(osgGlyphs::getCullingName(result.culling)) +
                   (result.ambientOcclusion ? " ao" : "") + describeScreenEffects(result.screenEffects) +
-                  (result.opacity < 1.0f ? " a" : ""))
+                  (result.opacity < 1.0f ? std::string(" a ") + getTransparencyName(result.transparency)
+                                         : ""))
               << std::right << std::setw(10) << formatMs(result.msMedian) << std::setw(12)
               << formatRatio(result, floor) << std::setw(12) << formatRatio(result, polygons) << std::setw(10)
               << formatOverdraw(result.overdraw) << "\n";
@@ -63,14 +64,17 @@ std::string getProgressPrefix(std::size_t index, std::size_t total, const BenchC
     return "[" + std::to_string(index) + "/" + std::to_string(total) + "] " + c.technique + " " +
            osgGlyphs::getShapeName(c.shape) + " n=" + std::to_string(c.n) + culling +
            (c.ambientOcclusion ? " ao" : "") + describeScreenEffects(c.screenEffects) +
-           (c.opacity < 1.0f ? " opacity=" + format(c.opacity, 2) : std::string()) + ": ";
+           (c.opacity < 1.0f ? " opacity=" + format(c.opacity, 2) + " " + getTransparencyName(c.transparency)
+                             : std::string()) +
+           ": ";
 }
 
 void printProgress(const BenchResult& result, std::size_t index, std::size_t total)
 {
     std::cout << getProgressPrefix(index, total,
                                    BenchCase{result.technique, result.shape, result.n, result.culling,
-                                             result.ambientOcclusion, result.screenEffects, result.opacity})
+                                             result.ambientOcclusion, result.screenEffects, result.opacity,
+                                             result.transparency})
               << "median " << formatMs(result.msMedian) << " ms (min " << formatMs(result.msMin) << ", max "
               << formatMs(result.msMax) << "), first frame " << formatMs(result.firstFrameMs) << " ms, "
               << format(result.bytesPerGlyph, 1) << " B/glyph, covers " << format(100.0 * result.coverage, 1)
@@ -93,7 +97,8 @@ void writeCsvRow(std::ostream& csv, const BenchResult& result, const BenchSettin
         << osgGlyphs::getCullingName(result.culling) << ','
         << (result.overdraw < 0.0 ? "" : format(result.overdraw, 3)) << ',' << format(result.submitted, 4)
         << ',' << (result.ambientOcclusion ? "on" : "off") << ',' << format(result.occlusionSeconds, 3) << ','
-        << getScreenEffectsName(result.screenEffects) << ',' << format(result.opacity, 3) << '\n'
+        << getScreenEffectsName(result.screenEffects) << ',' << format(result.opacity, 3) << ','
+        << (result.opacity < 1.0f ? getTransparencyName(result.transparency) : "") << '\n'
         << std::flush;
 }
 

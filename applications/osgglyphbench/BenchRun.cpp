@@ -55,8 +55,15 @@ std::vector<BenchCase> listCases(const BenchSettings& settings)
                     for (bool ambientOcclusion : settings.ambientOcclusion)
                         for (ScreenEffectsChoice effects : settings.screenEffects)
                             for (float opacity : settings.opacities)
-                                cases.push_back(BenchCase{technique, shape, n, culling, ambientOcclusion,
-                                                          effects, opacity});
+                                for (osgGlyphs::DepthPeeling::Method transparency :
+                                     settings.transparencyMethods)
+                                {
+                                    if (opacity < 1.0f ||
+                                        transparency == settings.transparencyMethods.front())
+                                        cases.push_back(BenchCase{technique, shape, n, culling,
+                                                                  ambientOcclusion, effects, opacity,
+                                                                  transparency});
+                                }
     }
     return cases;
 }
@@ -70,7 +77,8 @@ bool isOverBudget(const std::vector<BenchResult>& results, const BenchCase& c, c
     {
         if (result.technique == c.technique && result.shape == c.shape && result.culling == c.culling &&
             result.ambientOcclusion == c.ambientOcclusion && result.screenEffects == c.screenEffects &&
-            result.opacity == c.opacity && result.msMedian > settings.maxMs)
+            result.opacity == c.opacity && result.transparency == c.transparency &&
+            result.msMedian > settings.maxMs)
             return true;
     }
     return false;

@@ -10,6 +10,9 @@ void describeTransparencyOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--peel-layers <n>",
                                "The layers depth peeling draws exactly (default 4); what lies behind them "
                                "is dropped.");
+    usage.addCommandLineOption("--transparency <method>",
+                               "How the layers are found: k-buffer (the default: one pass into per-pixel "
+                               "lists of the nearest fragments) or peel (one pass per layer).");
 }
 
 bool readTransparencyOptions(osg::ArgumentParser& arguments, TransparencyOptions& options, std::string& error)
@@ -35,6 +38,17 @@ bool readTransparencyOptions(osg::ArgumentParser& arguments, TransparencyOptions
         }
         options.layers = static_cast<unsigned int>(layers);
     }
+    std::string method;
+    if (arguments.read("--transparency", method))
+    {
+        if (method != "k-buffer" && method != "peel")
+        {
+            error = "--transparency: unknown method '" + method + "' (k-buffer, peel)";
+            return false;
+        }
+        options.method =
+            method == "peel" ? osgGlyphs::DepthPeeling::PEEL_PASSES : osgGlyphs::DepthPeeling::K_BUFFER;
+    }
     return true;
 }
 
@@ -49,6 +63,7 @@ void Transparency::setOptions(const TransparencyOptions& options)
 {
     _options = options;
     _peeling->setNumLayers(options.layers);
+    _peeling->setMethod(options.method);
     setOn(options.on);
 }
 

@@ -16,12 +16,13 @@ struct TransparencyOptions
 {
     bool on = false;      // --opacity given
     float opacity = 0.5f; // --opacity V; also what key x turns on without it
-    unsigned int layers = osgGlyphs::DepthPeeling::DEFAULT_NUM_LAYERS; // --peel-layers N
+    unsigned int layers = osgGlyphs::DepthPeeling::DEFAULT_NUM_LAYERS;          // --peel-layers N
+    osgGlyphs::DepthPeeling::Method method = osgGlyphs::DepthPeeling::K_BUFFER; // --transparency M
 };
 
 void describeTransparencyOptions(osg::ApplicationUsage& usage);
 
-/** Reads --opacity and --peel-layers; false with a one-line error on a bad value. */
+/** Reads --opacity, --peel-layers and --transparency; false with a one-line error on a bad value. */
 bool readTransparencyOptions(osg::ArgumentParser& arguments, TransparencyOptions& options,
                              std::string& error);
 

@@ -1,5 +1,9 @@
 #version 330 compatibility
 #extension GL_ARB_conservative_depth : enable
+#extension GL_ARB_shader_storage_buffer_object : enable
+#extension GL_ARB_shading_language_420pack : enable
+#extension GL_ARB_shading_language_packing : enable
+#extension GL_ARB_shader_image_load_store : enable
 // osgGlyphs, the impostor techniques' pixels: each fragment ray-casts the glyph's exact surface,
 // lights it and writes its true depth, so that glyphs intersect each other and ordinary
 // geometry as if they were tessellated exactly.
@@ -12,6 +16,7 @@
 #include "varyings.glsl"
 #include "clip.glsl"
 #include "peel.glsl"
+#include "k-buffer-insert.glsl"
 
 out vec4 color;
 
@@ -158,6 +163,10 @@ void main()
     if (isPeeledAway(ivec2(gl_FragCoord.xy), gl_FragDepth))
         discard;
 #endif
+#ifdef OSGGLYPHS_K_BUFFER
+    if (isBehindKBuffer(ivec2(gl_FragCoord.xy), gl_FragDepth))
+        discard;
+#endif
     float ambientLight = 1.0;
 #ifdef OSGGLYPHS_AMBIENT_OCCLUSION
     ambientLight = clamp(fragOcclusion.w + dot(fragOcclusion.xyz, normal), 0.0, 1.0);
@@ -165,4 +174,8 @@ void main()
     color = vec4(shade(fragColor.rgb, position, normal, -direction, ambientLight),
                  fragColor.a * osgGlyphs_opacity);
     color.rgb = mix(color.rgb, osgGlyphs_highlight.rgb, osgGlyphs_highlight.a);
+#ifdef OSGGLYPHS_K_BUFFER
+    gl_FragDepth = insertIntoKBuffer(ivec2(gl_FragCoord.xy), gl_FragDepth, color);
+    color = vec4(0.0);
+#endif
 }

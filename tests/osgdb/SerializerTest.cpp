@@ -186,6 +186,7 @@ TEST_P(NativeFormats, ScreenEffectsAndDepthPeelingRoundTrip)
     effects->addChild(sphereCloud(-0.7f, 1.0f).get());
     osg::ref_ptr<osgGlyphs::DepthPeeling> peeling = new osgGlyphs::DepthPeeling;
     peeling->setNumLayers(3);
+    peeling->setMethod(osgGlyphs::DepthPeeling::PEEL_PASSES);
     peeling->addChild(sphereCloud(0.7f, 0.5f).get());
     osg::ref_ptr<osg::Group> scene = new osg::Group;
     scene->addChild(effects.get());
@@ -208,6 +209,7 @@ TEST_P(NativeFormats, ScreenEffectsAndDepthPeelingRoundTrip)
     EXPECT_EQ(readEffects->getOutlineColor(), osg::Vec4(0.2f, 0.0f, 0.1f, 0.9f));
     EXPECT_EQ(readEffects->getNumChildren(), 1u);
     EXPECT_EQ(readPeeling->getNumLayers(), 3u);
+    EXPECT_EQ(readPeeling->getMethod(), osgGlyphs::DepthPeeling::PEEL_PASSES);
     EXPECT_EQ(readPeeling->getEnabled(), true);
     EXPECT_EQ(readPeeling->getNumChildren(), 1u);
 

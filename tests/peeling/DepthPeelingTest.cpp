@@ -17,6 +17,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
+#include <string>
 
 using namespace osgGlyphsTest;
 using osgGlyphs::DepthPeeling;
@@ -35,10 +37,19 @@ struct Surface
     float alpha;
 };
 
-class DepthPeelingTest : public ::testing::Test
+/** Each test runs with each of DepthPeeling's methods. */
+class DepthPeelingTest : public ::testing::TestWithParam<DepthPeeling::Method>
 {
 protected:
     DepthPeelingTest() { renderer.setClearColor(BACKGROUND); }
+
+    /** A peeling node of the method under test. */
+    osg::ref_ptr<DepthPeeling> createPeeling() const
+    {
+        osg::ref_ptr<DepthPeeling> peeling = new DepthPeeling;
+        peeling->setMethod(GetParam());
+        return peeling;
+    }
 
     /** The children under a peeling node. */
     Frame renderPeeled(std::initializer_list<osg::Node*> transparent, osg::Node* opaque = nullptr)
@@ -46,12 +57,15 @@ protected:
         osg::ref_ptr<osg::Group> root = new osg::Group;
         if (opaque)
             root->addChild(opaque);
-        osg::ref_ptr<DepthPeeling> peeling = new DepthPeeling;
+        osg::ref_ptr<DepthPeeling> peeling = createPeeling();
         for (osg::Node* child : transparent)
             peeling->addChild(child);
         root->addChild(peeling.get());
         return renderer.render(root.get());
     }
+
+    /** The name of a saved picture ends with the method's. */
+    std::string methodSuffix() const { return GetParam() == DepthPeeling::K_BUFFER ? "_kbuffer" : "_passes"; }
 
     /** A node drawn alone and opaque. */
     Surface renderAlone(osg::Node* node, float alpha) { return {renderer.render(node), alpha}; }
@@ -141,7 +155,7 @@ const osg::Vec4ub WHITE(240, 240, 240, 255);
 
 }
 
-TEST_F(DepthPeelingTest, OverlappingSpheresBlendAsSortedInEitherArrayOrder)
+TEST_P(DepthPeelingTest, OverlappingSpheresBlendAsSortedInEitherArrayOrder)
 {
     // The red sphere is nearer the eye (at y = -10) than the green one.
     const SphereSpec nearSphere = {osg::Vec3(-0.5f, -1.0f, 0.2f), 1.3f, RED};
@@ -154,7 +168,7 @@ TEST_F(DepthPeelingTest, OverlappingSpheresBlendAsSortedInEitherArrayOrder)
     };
     const Frame frontToBack = renderPeeled({cloudOf({nearSphere, farSphere}).get()});
     const Frame backToFront = renderPeeled({cloudOf({farSphere, nearSphere}).get()});
-    saveFrame(frontToBack, "peeling_two_spheres");
+    saveFrame(frontToBack, "peeling_two_spheres" + methodSuffix());
 
     EXPECT_EQ(countDifferentPixels(frontToBack, backToFront), 0);
     const std::vector<Surface> surfaces = {renderAlone(createSphereCloud({nearSphere}, true).get(), 0.5f),
@@ -164,7 +178,7 @@ TEST_F(DepthPeelingTest, OverlappingSpheresBlendAsSortedInEitherArrayOrder)
     EXPECT_GT(overlaps, 500);
 }
 
-TEST_F(DepthPeelingTest, OpaqueGeometryOutsideHidesTheGlyphsBehindIt)
+TEST_P(DepthPeelingTest, OpaqueGeometryOutsideHidesTheGlyphsBehindIt)
 {
     const SphereSpec wall = {osg::Vec3(0.0f, 0.0f, 0.0f), 2.0f, WHITE};
     const SphereSpec behind = {osg::Vec3(-0.3f, 3.0f, 0.2f), 0.8f, RED};
@@ -172,7 +186,7 @@ TEST_F(DepthPeelingTest, OpaqueGeometryOutsideHidesTheGlyphsBehindIt)
     const Frame frame = renderPeeled({sphere(behind.center, behind.radius, behind.color, 0.5f).get(),
                                       sphere(inFront.center, inFront.radius, inFront.color, 0.5f).get()},
                                      createSphereCloud({wall}, true).get());
-    saveFrame(frame, "peeling_opaque_wall");
+    saveFrame(frame, "peeling_opaque_wall" + methodSuffix());
 
     const std::vector<Surface> surfaces = {renderAlone(createSphereCloud({wall}, true).get(), 1.0f),
                                            renderAlone(createSphereCloud({behind}, true).get(), 0.5f),
@@ -190,7 +204,7 @@ TEST_F(DepthPeelingTest, OpaqueGeometryOutsideHidesTheGlyphsBehindIt)
                           surfaces[0].frame.depthAt(int(hidden.x()), int(hidden.y())), 1.0e-6));
 }
 
-TEST_F(DepthPeelingTest, ConeThroughSpherePeelsInEitherChildOrder)
+TEST_P(DepthPeelingTest, ConeThroughSpherePeelsInEitherChildOrder)
 {
     const SphereSpec ball = {osg::Vec3(0.0f, 0.0f, 0.0f), 1.2f, GREEN};
     auto cone = []
@@ -214,7 +228,7 @@ TEST_F(DepthPeelingTest, ConeThroughSpherePeelsInEitherChildOrder)
         renderPeeled({transparent(cone()).get(), sphere(ball.center, ball.radius, ball.color, 0.5f).get()});
     const Frame ballFirst =
         renderPeeled({sphere(ball.center, ball.radius, ball.color, 0.5f).get(), transparent(cone()).get()});
-    saveFrame(coneFirst, "peeling_cone_through_sphere");
+    saveFrame(coneFirst, "peeling_cone_through_sphere" + methodSuffix());
 
     EXPECT_EQ(countDifferentPixels(coneFirst, ballFirst), 0);
     const std::vector<Surface> surfaces = {renderAlone(cone().get(), 0.5f),
@@ -224,7 +238,7 @@ TEST_F(DepthPeelingTest, ConeThroughSpherePeelsInEitherChildOrder)
     EXPECT_GT(overlaps, 300);
 }
 
-TEST_F(DepthPeelingTest, UnderScreenEffectsTheLayersBlendOverTheBackgroundToo)
+TEST_P(DepthPeelingTest, UnderScreenEffectsTheLayersBlendOverTheBackgroundToo)
 {
     // ScreenEffects with the opaque wall and the peeled spheres as children; one sphere lies over
     // the background alone. Occlusion of strength 0 runs the effects' composite without changing
@@ -234,7 +248,7 @@ TEST_F(DepthPeelingTest, UnderScreenEffectsTheLayersBlendOverTheBackgroundToo)
     const SphereSpec behind = {osg::Vec3(-0.3f, 3.0f, 0.2f), 0.8f, RED};
     const SphereSpec inFront = {osg::Vec3(0.8f, -3.0f, -0.2f), 0.5f, GREEN};
     const SphereSpec aside = {osg::Vec3(-2.9f, -1.0f, 1.2f), 0.6f, RED};
-    osg::ref_ptr<DepthPeeling> peeling = new DepthPeeling;
+    osg::ref_ptr<DepthPeeling> peeling = createPeeling();
     for (const SphereSpec& spec : {behind, inFront, aside})
         peeling->addChild(sphere(spec.center, spec.radius, spec.color, 0.5f).get());
     osg::ref_ptr<osgGlyphs::ScreenEffects> effects = new osgGlyphs::ScreenEffects;
@@ -243,7 +257,7 @@ TEST_F(DepthPeelingTest, UnderScreenEffectsTheLayersBlendOverTheBackgroundToo)
     effects->setAmbientOcclusion(true);
     effects->setOcclusionStrength(0.0f);
     const Frame frame = renderer.render(effects.get());
-    saveFrame(frame, "peeling_under_screen_effects");
+    saveFrame(frame, "peeling_under_screen_effects" + methodSuffix());
 
     const std::vector<Surface> surfaces = {renderAlone(createSphereCloud({wall}, true).get(), 1.0f),
                                            renderAlone(createSphereCloud({behind}, true).get(), 0.5f),
@@ -267,7 +281,7 @@ TEST_F(DepthPeelingTest, UnderScreenEffectsTheLayersBlendOverTheBackgroundToo)
         EXPECT_NEAR(actual[c], expected[c], 1) << "channel " << c;
 }
 
-TEST_F(DepthPeelingTest, StacksOfSmallSpheresPeelAsSortedInEitherArrayOrder)
+TEST_P(DepthPeelingTest, StacksOfSmallSpheresPeelAsSortedInEitherArrayOrder)
 {
     // Spheres of about a pixel, stacked three deep along rays from the eye (at y = -10) and moved
     // by a third of a pixel within a stack, so that they cover each other's pixels in part: the
@@ -301,7 +315,7 @@ TEST_F(DepthPeelingTest, StacksOfSmallSpheresPeelAsSortedInEitherArrayOrder)
     };
     const Frame frontToBack = renderPeeled({cloudOf(nearFirst).get()});
     const Frame backToFront = renderPeeled({cloudOf(farFirst).get()});
-    saveFrame(frontToBack, "peeling_small_spheres");
+    saveFrame(frontToBack, "peeling_small_spheres" + methodSuffix());
 
     EXPECT_EQ(countDifferentPixels(frontToBack, backToFront), 0);
     std::vector<Surface> surfaces;
@@ -310,4 +324,61 @@ TEST_F(DepthPeelingTest, StacksOfSmallSpheresPeelAsSortedInEitherArrayOrder)
     int overlaps = 0;
     EXPECT_EQ(countMismatches(frontToBack, surfaces, overlaps), 0);
     EXPECT_GT(overlaps, 500);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, DepthPeelingTest,
+                         ::testing::Values(DepthPeeling::K_BUFFER, DepthPeeling::PEEL_PASSES),
+                         [](const ::testing::TestParamInfo<DepthPeeling::Method>& info)
+                         { return info.param == DepthPeeling::K_BUFFER ? "KBuffer" : "PeelPasses"; });
+
+TEST(DepthPeelingMethods, KBufferKeepsTheLayersPeelPassesKeepInADenseCloud)
+{
+    // 3000 spheres in a cube, about ten deep at a pixel: beyond the 4 layers kept, so both methods
+    // drop the same fragments. The k-buffer keeps each layer's colour in 8 bits, the passes in
+    // half floats: a channel may differ by 2; the depth left behind is the same nearest layer.
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> coordinate(-1.8f, 1.8f);
+    std::uniform_int_distribution<int> channel(30, 240);
+    std::vector<SphereSpec> spheres;
+    for (int i = 0; i < 3000; ++i)
+        spheres.push_back({osg::Vec3(coordinate(random), coordinate(random), coordinate(random)), 0.16f,
+                           osg::Vec4ub(channel(random), channel(random), channel(random), 255)});
+    Renderer renderer{160, 120};
+    renderer.setClearColor(BACKGROUND);
+    auto render = [&](DepthPeeling::Method method, unsigned int layers)
+    {
+        osg::ref_ptr<GlyphCloud> cloud = createSphereCloud(spheres, true);
+        cloud->setOpacity(0.5f);
+        osg::ref_ptr<DepthPeeling> peeling = new DepthPeeling;
+        peeling->setMethod(method);
+        peeling->setNumLayers(layers);
+        peeling->addChild(cloud.get());
+        return renderer.render(peeling.get());
+    };
+    const Frame kBuffer = render(DepthPeeling::K_BUFFER, 4);
+    const Frame passes = render(DepthPeeling::PEEL_PASSES, 4);
+    saveFrame(kBuffer, "peeling_dense_kbuffer");
+
+    int covered = 0, colorMismatches = 0, depthMismatches = 0;
+    for (int y = 0; y < kBuffer.height(); ++y)
+        for (int x = 0; x < kBuffer.width(); ++x)
+        {
+            covered += kBuffer.isCovered(x, y) ? 1 : 0;
+            const osg::Vec4ub a = kBuffer.colorAt(x, y), b = passes.colorAt(x, y);
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(a[c] - b[c]) > COLOR_TOLERANCE)
+                {
+                    if (colorMismatches++ < 5)
+                        ADD_FAILURE() << "pixel (" << x << ", " << y << ") channel " << c << ": k-buffer "
+                                      << int(a[c]) << ", passes " << int(b[c]);
+                    break;
+                }
+            if (std::abs(kBuffer.depthAt(x, y) - passes.depthAt(x, y)) > 1.0e-6f)
+                ++depthMismatches;
+        }
+    EXPECT_EQ(colorMismatches, 0);
+    EXPECT_EQ(depthMismatches, 0);
+    EXPECT_GT(covered, kBuffer.width() * kBuffer.height() / 5);
+    // The fifth and later layers show with 8 kept: the cloud is deeper than 4 layers.
+    EXPECT_GT(countDifferentPixels(kBuffer, render(DepthPeeling::K_BUFFER, 8)), covered / 4);
 }

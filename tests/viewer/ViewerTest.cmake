@@ -168,13 +168,17 @@ elseif(CASE STREQUAL "shadows")
     check(coverage builtin.png 0.1)
 elseif(CASE STREQUAL "transparency")
     # --opacity: the spheres blend over each other and the background (the picture changes); at
-    # opacity 1 the peeled picture is the opaque one (within the rounding of its half-float layers).
+    # opacity 1 the sorted picture is the opaque one (within the rounding of its layers).
     set(oblique --size 160 120 --camera 0 -5 4 0 0 0 0 0 1 --fov 40 --radius 0.5)
     expect_success(${spheres} --output plain.png ${oblique})
     expect_success(${spheres} --output half.png --opacity 0.5 --peel-layers 3 ${oblique})
     expect_success(${spheres} --output whole.png --opacity 1 ${oblique})
     check(differ plain.png half.png 0.05)
     check(match whole.png plain.png 2 0.0)
+    # Both ways of finding the layers give the same picture (the k-buffer keeps 8-bit colours).
+    expect_success(${spheres} --output half_peel.png --opacity 0.5 --peel-layers 3 --transparency peel ${oblique})
+    check(match half_peel.png half.png 2 0.0)
+    expect_failure("--transparency: unknown method 'sorted' \\(k-buffer, peel\\)" ${spheres} --transparency sorted)
     expect_failure("--opacity: the opacity goes from 0 \\(excluded\\) to 1" ${spheres} --opacity 0)
     expect_failure("--peel-layers: from 1 to 64 layers" ${spheres} --peel-layers 0)
     # With outlines and screen-space occlusion (ScreenEffects above the peeling): the transparent

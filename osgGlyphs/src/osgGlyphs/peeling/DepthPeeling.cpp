@@ -15,7 +15,8 @@ using namespace osgGlyphs;
 DepthPeeling::DepthPeeling() = default;
 
 DepthPeeling::DepthPeeling(const DepthPeeling& other, const osg::CopyOp& copyop)
-    : osg::Group(other, copyop), _numLayers(other._numLayers), _enabled(other._enabled)
+    : osg::Group(other, copyop), _numLayers(other._numLayers), _method(other._method),
+      _enabled(other._enabled)
 {
 }
 
@@ -113,8 +114,9 @@ void DepthPeeling::traverse(osg::NodeVisitor& nv)
     }
     detail::PeelingPasses* passes = getPasses(cv->getState()->getContextID());
     passes->setNumLayers(_numLayers);
+    passes->setMethod(_method, *cv->getState(), cv->getViewport());
     cv->pushStateSet(passes->getPassStateSet());
-    cv->getCurrentRenderBin()->setDrawCallback(passes);
+    cv->getCurrentRenderBin()->setDrawCallback(passes->getDrawCallback().get());
     osg::Group::traverse(nv);
     cv->popStateSet();
 }

@@ -7,6 +7,9 @@
 #include <osg/ColorMask>
 #include <osg/Depth>
 #include <osg/GLExtensions>
+#include <osg/Notify>
+
+#include <algorithm>
 
 using namespace osgGlyphs;
 using namespace osgGlyphs::detail;
@@ -15,6 +18,9 @@ namespace
 {
 
 const unsigned int LAYER_TEXTURE_UNIT = 0;
+
+/** A k-buffer slot without a fragment: beyond every depth's float bits (k-buffer.glsl). */
+const GLuint EMPTY_LAYER = 0xffffffffu;
 
 osg::ref_ptr<osg::Texture2D> createTarget(int width, int height, GLint internalFormat, GLenum format)
 {
@@ -122,6 +128,38 @@ PeelingPasses::PeelingPasses()
                                  osg::StateAttribute::ON | osg::StateAttribute::PROTECTED);
     _depthStateSet->setMode(GL_DEPTH_TEST, osg::StateAttribute::ON | osg::StateAttribute::PROTECTED);
 
+    // The k-buffer pass: fragments go into the buffer. Their colour is transparent black, which
+    // the blending leaves out of the target (children of other programs draw as they are); their
+    // depth is the farthest layer of a full list, which culls what lies behind it.
+    _kBufferStateSet = new osg::StateSet;
+    _kBufferStateSet->setName("osgGlyphs k-buffer");
+    _kBufferStateSet->setRenderBinDetails(DepthPeeling::RENDER_BIN_NUMBER, "RenderBin",
+                                          osg::StateSet::OVERRIDE_RENDERBIN_DETAILS);
+    _kBufferStateSet->setNestRenderBins(false);
+    _kBufferStateSet->setDefine(GLYPH_K_BUFFER_DEFINE);
+    _kBufferStateSet->addUniform(
+        new osg::Uniform("osgGlyphs_peelDepth", static_cast<int>(DEPTH_PEEL_TEXTURE_UNIT)));
+    _kBufferSize = new osg::Uniform("osgGlyphs_kBufferSize", 0, 1);
+    _kBufferStateSet->addUniform(_kBufferSize.get());
+    _kBufferStateSet->setAttributeAndModes(
+        new osg::BlendFunc(osg::BlendFunc::SRC_ALPHA, osg::BlendFunc::ONE_MINUS_SRC_ALPHA),
+        osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+    _kBufferStateSet->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, true),
+                                           osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+    _kBufferBinding = new osg::ShaderStorageBufferBinding(K_BUFFER_BINDING);
+    _kBufferStateSet->setAttribute(_kBufferBinding.get());
+
+    _resolveStateSet = new osg::StateSet;
+    const unsigned int PROTECTED = osg::StateAttribute::ON | osg::StateAttribute::PROTECTED;
+    _resolveStateSet->setAttributeAndModes(GlyphStateCache::instance()->getKBufferResolveProgram(),
+                                           PROTECTED);
+    _resolveStateSet->setAttributeAndModes(
+        new osg::BlendFunc(osg::BlendFunc::ONE, osg::BlendFunc::ONE_MINUS_SRC_ALPHA), PROTECTED);
+    _resolveStateSet->setAttributeAndModes(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, true), PROTECTED);
+    _resolveStateSet->setMode(GL_CULL_FACE, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+    _resolveStateSet->addUniform(_kBufferSize.get(), PROTECTED);
+    _resolveStateSet->setAttribute(_kBufferBinding.get(), PROTECTED);
+
     _quad = osg::createTexturedQuadGeometry(osg::Vec3(-1.0f, -1.0f, 0.0f), osg::Vec3(2.0f, 0.0f, 0.0f),
                                             osg::Vec3(0.0f, 2.0f, 0.0f));
     _quad->setUseDisplayList(false);
@@ -179,11 +217,89 @@ void PeelingPasses::compose(osg::RenderInfo& renderInfo, osg::StateSet* stateSet
     state.apply();
 }
 
-void PeelingPasses::drawImplementation(osgUtil::RenderBin* bin, osg::RenderInfo& renderInfo,
-                                       osgUtil::RenderLeaf*& previous)
+namespace
 {
-    if (isEmpty(*bin))
-        return;
+
+/** A frame's draw of the bin, by the method that was culled. */
+class PeelingDraw : public osgUtil::RenderBin::DrawCallback
+{
+public:
+    PeelingDraw(PeelingPasses* passes, bool kBuffer, unsigned int layers)
+        : _passes(passes), _kBuffer(kBuffer), _layers(layers)
+    {
+    }
+
+    void drawImplementation(osgUtil::RenderBin* bin, osg::RenderInfo& renderInfo,
+                            osgUtil::RenderLeaf*& previous) override
+    {
+        if (isEmpty(*bin))
+            return;
+        if (_kBuffer)
+            _passes->drawKBuffer(bin, renderInfo, previous, _layers);
+        else
+            _passes->drawPeelPasses(bin, renderInfo, previous, _layers);
+    }
+
+private:
+    osg::ref_ptr<PeelingPasses> _passes;
+    bool _kBuffer;
+    unsigned int _layers;
+};
+
+/** Whether a context has what the k-buffer needs: known once OSG has set up its extensions. */
+bool supportsKBuffer(const osg::State& state)
+{
+    const osg::GLExtensions* ext = osg::GLExtensions::Get(state.getContextID(), false);
+    return ext && ext->glVersion >= 4.3f && ext->glMemoryBarrier && ext->isFrameBufferObjectSupported;
+}
+
+/** The bytes of a k-buffer for a viewport (from the window's origin) and a number of layers. */
+long long kBufferBytes(double rowPixels, double rows, unsigned int layers)
+{
+    return static_cast<long long>(rowPixels * rows * (1.0 + 2.0 * layers) * sizeof(GLuint));
+}
+
+}
+
+void PeelingPasses::setMethod(DepthPeeling::Method method, const osg::State& state,
+                              const osg::Viewport* viewport)
+{
+    bool kBuffer = method == DepthPeeling::K_BUFFER && supportsKBuffer(state);
+    if (kBuffer && viewport)
+        kBuffer = kBufferBytes(viewport->x() + viewport->width(), viewport->y() + viewport->height(),
+                               _numLayers) <= _maxKBufferBytes;
+    _method = kBuffer ? DepthPeeling::K_BUFFER : DepthPeeling::PEEL_PASSES;
+}
+
+osg::StateSet* PeelingPasses::getPassStateSet()
+{
+    return _method == DepthPeeling::K_BUFFER ? _kBufferStateSet.get() : _passStateSet.get();
+}
+
+osg::ref_ptr<osgUtil::RenderBin::DrawCallback> PeelingPasses::getDrawCallback()
+{
+    return new PeelingDraw(this, _method == DepthPeeling::K_BUFFER, _numLayers);
+}
+
+bool PeelingPasses::copyOpaqueDepth(osg::State& state, const GLint viewport[4])
+{
+    const GLint x0 = viewport[0], y0 = viewport[1], x1 = viewport[0] + viewport[2],
+                y1 = viewport[1] + viewport[3];
+    if (x1 != _targets.width || y1 != _targets.height)
+        resizeTargets(state, x1, y1);
+    // A copy rather than a blit: the target's depth format may differ. A multisampled target
+    // cannot be copied.
+    state.applyTextureAttribute(LAYER_TEXTURE_UNIT, _targets.opaqueDepth.get());
+    while (glGetError() != GL_NO_ERROR)
+    {
+    }
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, x0, y0, x0, y0, x1 - x0, y1 - y0);
+    return glGetError() == GL_NO_ERROR;
+}
+
+void PeelingPasses::drawPeelPasses(osgUtil::RenderBin* bin, osg::RenderInfo& renderInfo,
+                                   osgUtil::RenderLeaf*& previous, unsigned int numLayers)
+{
     osg::State& state = *renderInfo.getState();
     osg::GLExtensions* ext = state.get<osg::GLExtensions>();
     if (!ext->isFrameBufferObjectSupported || !ext->glBlitFramebuffer)
@@ -200,8 +316,14 @@ void PeelingPasses::drawImplementation(osgUtil::RenderBin* bin, osg::RenderInfo&
                 y1 = viewport[1] + viewport[3];
     if (viewport[2] <= 0 || viewport[3] <= 0)
         return;
-    if (x1 != _targets.width || y1 != _targets.height)
-        resizeTargets(state, x1, y1);
+
+    // The depth of what the stage drew, which hides the layers behind it; the children are drawn
+    // unsorted where it cannot be copied.
+    if (!copyOpaqueDepth(state, viewport))
+    {
+        bin->drawImplementation(renderInfo, previous);
+        return;
+    }
 
     openWriteMasks(state);
     GLfloat clearColor[4];
@@ -215,27 +337,10 @@ void PeelingPasses::drawImplementation(osgUtil::RenderBin* bin, osg::RenderInfo&
     glClearDepth(0.0);
     glClear(GL_DEPTH_BUFFER_BIT);
     glClearDepth(1.0);
-    ext->glBindFramebuffer(GL_DRAW_FRAMEBUFFER_EXT, targetDraw);
-
-    // The depth of what the stage drew, which hides the layers behind it. A copy rather than a
-    // blit: the target's depth format may differ. A multisampled target cannot be copied: the
-    // children are then drawn unsorted.
-    state.applyTextureAttribute(LAYER_TEXTURE_UNIT, _targets.opaqueDepth.get());
-    while (glGetError() != GL_NO_ERROR)
-    {
-    }
-    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, x0, y0, x0, y0, x1 - x0, y1 - y0);
-    if (glGetError() != GL_NO_ERROR)
-    {
-        glClearColor(clearColor[0], clearColor[1], clearColor[2], clearColor[3]);
-        glClearDepth(clearDepth);
-        bin->drawImplementation(renderInfo, previous);
-        return;
-    }
     _targets.accumulated->apply(state, osg::FrameBufferObject::DRAW_FRAMEBUFFER);
     glClear(GL_COLOR_BUFFER_BIT);
 
-    for (unsigned int layer = 0; layer < _numLayers; ++layer)
+    for (unsigned int layer = 0; layer < numLayers; ++layer)
     {
         openWriteMasks(state);
         _targets.opaque->apply(state, osg::FrameBufferObject::READ_FRAMEBUFFER);
@@ -257,7 +362,7 @@ void PeelingPasses::drawImplementation(osgUtil::RenderBin* bin, osg::RenderInfo&
         };
         if (layer == 0)
             keepDepth(_targets.nearest.get());
-        if (layer + 1 < _numLayers)
+        if (layer + 1 < numLayers)
             keepDepth(_targets.previous.get());
 
         _targets.accumulated->apply(state, osg::FrameBufferObject::READ_DRAW_FRAMEBUFFER);
@@ -272,6 +377,66 @@ void PeelingPasses::drawImplementation(osgUtil::RenderBin* bin, osg::RenderInfo&
     glClearDepth(clearDepth);
 }
 
+void PeelingPasses::resizeKBuffer(osg::State& state, unsigned int pixels, unsigned int layers)
+{
+    if (_kBuffer)
+        _kBuffer->releaseGLObjects(&state);
+    const unsigned int stride = 1 + 2 * layers;
+    _kBuffer = new osg::UIntArray(pixels * stride, 0u);
+    for (unsigned int pixel = 0; pixel < pixels; ++pixel)
+        std::fill_n(_kBuffer->begin() + pixel * stride + 1, layers, EMPTY_LAYER);
+    _kBuffer->setBufferObject(new osg::ShaderStorageBufferObject);
+    _kBufferBinding->setBufferData(_kBuffer.get());
+    _kBufferBinding->setOffset(0);
+    _kBufferBinding->setSize(static_cast<GLsizeiptr>(_kBuffer->getTotalDataSize()));
+}
+
+void PeelingPasses::drawKBuffer(osgUtil::RenderBin* bin, osg::RenderInfo& renderInfo,
+                                osgUtil::RenderLeaf*& previous, unsigned int numLayers)
+{
+    osg::State& state = *renderInfo.getState();
+    GLint viewport[4] = {0, 0, 0, 0};
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    if (viewport[2] <= 0 || viewport[3] <= 0)
+        return;
+    if (!copyOpaqueDepth(state, viewport))
+    {
+        bin->drawImplementation(renderInfo, previous);
+        return;
+    }
+    GLint maxBytes = 0;
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBytes);
+    _maxKBufferBytes = maxBytes;
+    if (kBufferBytes(viewport[0] + viewport[2], viewport[1] + viewport[3], numLayers) > maxBytes)
+    {
+        // Only before the cull knew the limit: the next frame peels in passes.
+        OSG_WARN << "osgGlyphs::DepthPeeling: the k-buffer exceeds GL_MAX_SHADER_STORAGE_BLOCK_SIZE; "
+                    "transparent children are left out of this frame"
+                 << std::endl;
+        return;
+    }
+    const int rowPixels = viewport[0] + viewport[2];
+    const int layers = static_cast<int>(numLayers);
+    const unsigned int pixels = static_cast<unsigned int>(rowPixels * (viewport[1] + viewport[3]));
+    int previousRow = 0, previousLayers = 0;
+    _kBufferSize->get(previousRow, previousLayers);
+    if (!_kBuffer || previousRow != rowPixels || previousLayers != layers ||
+        _kBuffer->size() != pixels * (1 + 2 * numLayers))
+    {
+        resizeKBuffer(state, pixels, numLayers);
+        _kBufferSize->set(rowPixels, layers);
+    }
+    _kBufferStateSet->setTextureAttribute(DEPTH_PEEL_TEXTURE_UNIT, _targets.opaqueDepth.get());
+
+    bin->drawImplementation(renderInfo, previous);
+    osg::GLExtensions* ext = state.get<osg::GLExtensions>();
+    ext->glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    openWriteMasks(state);
+    compose(renderInfo, _resolveStateSet.get());
+    // The lists are empty again for the next frame's fragments.
+    ext->glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
 void PeelingPasses::releaseGLObjects(osg::State* state)
 {
     _targets.releaseGLObjects(state);
@@ -280,5 +445,9 @@ void PeelingPasses::releaseGLObjects(osg::State* state)
     _underStateSet->releaseGLObjects(state);
     _overStateSet->releaseGLObjects(state);
     _depthStateSet->releaseGLObjects(state);
+    _kBufferStateSet->releaseGLObjects(state);
+    _resolveStateSet->releaseGLObjects(state);
+    if (_kBuffer)
+        _kBuffer->releaseGLObjects(state);
     _quad->releaseGLObjects(state);
 }

@@ -106,6 +106,7 @@ void osgGlyphs::setGlyphAmbientOcclusion(osg::StateSet& stateSet, bool on)
 }
 
 const char* const osgGlyphs::GLYPH_DEPTH_PEEL_DEFINE = "OSGGLYPHS_DEPTH_PEEL";
+const char* const osgGlyphs::GLYPH_K_BUFFER_DEFINE = "OSGGLYPHS_K_BUFFER";
 
 GlyphStateCache* GlyphStateCache::instance()
 {
@@ -157,6 +158,12 @@ osg::Program* GlyphStateCache::getSurfaceProgram()
 osg::Program* GlyphStateCache::getScreenEffectsProgram()
 {
     return getFileProgram("screen effects", "osgGlyphs/fullscreen.vert", "osgGlyphs/screen-effects.frag",
+                          false);
+}
+
+osg::Program* GlyphStateCache::getKBufferResolveProgram()
+{
+    return getFileProgram("k-buffer resolve", "osgGlyphs/fullscreen.vert", "osgGlyphs/k-buffer-resolve.frag",
                           false);
 }
 
