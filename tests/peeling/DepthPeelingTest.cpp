@@ -336,6 +336,8 @@ TEST(DepthPeelingMethods, KBufferKeepsTheLayersPeelPassesKeepInADenseCloud)
     // 3000 spheres in a cube, about ten deep at a pixel: beyond the 4 layers kept, so both methods
     // drop the same fragments. The k-buffer keeps each layer's colour in 8 bits, the passes in
     // half floats: a channel may differ by 2; the depth left behind is the same nearest layer.
+    // Occlusion culling (chunks of 32) skips what lies behind the farthest layer of full lists,
+    // which the k-buffer pass writes as depth: the picture must be that of the unculled cloud.
     std::mt19937 random(7);
     std::uniform_real_distribution<float> coordinate(-1.8f, 1.8f);
     std::uniform_int_distribution<int> channel(30, 240);
@@ -345,17 +347,25 @@ TEST(DepthPeelingMethods, KBufferKeepsTheLayersPeelPassesKeepInADenseCloud)
                            osg::Vec4ub(channel(random), channel(random), channel(random), 255)});
     Renderer renderer{160, 120};
     renderer.setClearColor(BACKGROUND);
-    auto render = [&](DepthPeeling::Method method, unsigned int layers)
+    osgGlyphs::GlyphCullingStatistics culled;
+    auto render = [&](DepthPeeling::Method method, unsigned int layers,
+                      osgGlyphs::GlyphCulling culling = osgGlyphs::GlyphCulling::Occlusion)
     {
         osg::ref_ptr<GlyphCloud> cloud = createSphereCloud(spheres, true);
         cloud->setOpacity(0.5f);
+        cloud->setCulling(culling);
+        cloud->setCullingChunkSize(32);
         osg::ref_ptr<DepthPeeling> peeling = new DepthPeeling;
         peeling->setMethod(method);
         peeling->setNumLayers(layers);
         peeling->addChild(cloud.get());
-        return renderer.render(peeling.get());
+        const Frame frame = renderer.render(peeling.get());
+        culled = cloud->getCullingStatistics(0);
+        return frame;
     };
     const Frame kBuffer = render(DepthPeeling::K_BUFFER, 4);
+    const osgGlyphs::GlyphCullingStatistics kBufferCulled = culled;
+    const Frame unculled = render(DepthPeeling::K_BUFFER, 4, osgGlyphs::GlyphCulling::Off);
     const Frame passes = render(DepthPeeling::PEEL_PASSES, 4);
     saveFrame(kBuffer, "peeling_dense_kbuffer");
 
@@ -373,12 +383,15 @@ TEST(DepthPeelingMethods, KBufferKeepsTheLayersPeelPassesKeepInADenseCloud)
                                       << int(a[c]) << ", passes " << int(b[c]);
                     break;
                 }
-            if (std::abs(kBuffer.depthAt(x, y) - passes.depthAt(x, y)) > 1.0e-6f)
+            if (std::abs(kBuffer.depthAt(x, y) - passes.depthAt(x, y)) > 1.0e-6f ||
+                kBuffer.depthAt(x, y) != unculled.depthAt(x, y))
                 ++depthMismatches;
         }
     EXPECT_EQ(colorMismatches, 0);
     EXPECT_EQ(depthMismatches, 0);
+    EXPECT_EQ(countDifferentPixels(kBuffer, unculled), 0);
     EXPECT_GT(covered, kBuffer.width() * kBuffer.height() / 5);
+    EXPECT_LT(kBufferCulled.glyphsSubmitted, spheres.size() * 9 / 10) << "culling skipped nothing";
     // The fifth and later layers show with 8 kept: the cloud is deeper than 4 layers.
     EXPECT_GT(countDifferentPixels(kBuffer, render(DepthPeeling::K_BUFFER, 8)), covered / 4);
 }
