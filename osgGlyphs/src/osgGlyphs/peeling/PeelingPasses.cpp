@@ -74,6 +74,26 @@ osg::ref_ptr<osg::StateSet> createCompositionStateSet(osg::BlendFunc* blend, boo
     return stateSet;
 }
 
+/** The StateSet above the drawn children: the render bin, the method's define, the depth texture's
+ * unit, depth writes, and the blending (off without one), over the children's own. */
+osg::ref_ptr<osg::StateSet> createDrawStateSet(const char* name, const char* define, osg::BlendFunc* blend)
+{
+    const unsigned int OVERRIDE = osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE;
+    osg::ref_ptr<osg::StateSet> stateSet = new osg::StateSet;
+    stateSet->setName(name);
+    stateSet->setRenderBinDetails(DepthPeeling::RENDER_BIN_NUMBER, "RenderBin",
+                                  osg::StateSet::OVERRIDE_RENDERBIN_DETAILS);
+    stateSet->setNestRenderBins(false);
+    stateSet->setDefine(define);
+    stateSet->addUniform(new osg::Uniform("osgGlyphs_peelDepth", static_cast<int>(DEPTH_PEEL_TEXTURE_UNIT)));
+    if (blend)
+        stateSet->setAttributeAndModes(blend, OVERRIDE);
+    else
+        stateSet->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
+    stateSet->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, true), OVERRIDE);
+    return stateSet;
+}
+
 /** Clears and blits obey the write masks and the scissor: opens them, and lets OSG apply its own
  * again afterwards. */
 void openWriteMasks(osg::State& state)
@@ -96,18 +116,8 @@ bool isEmpty(const osgUtil::RenderBin& bin)
 
 PeelingPasses::PeelingPasses()
 {
-    _passStateSet = new osg::StateSet;
-    _passStateSet->setName("osgGlyphs depth peeling");
-    _passStateSet->setRenderBinDetails(DepthPeeling::RENDER_BIN_NUMBER, "RenderBin",
-                                       osg::StateSet::OVERRIDE_RENDERBIN_DETAILS);
-    _passStateSet->setNestRenderBins(false);
-    _passStateSet->setDefine(GLYPH_DEPTH_PEEL_DEFINE);
-    _passStateSet->addUniform(
-        new osg::Uniform("osgGlyphs_peelDepth", static_cast<int>(DEPTH_PEEL_TEXTURE_UNIT)));
     // Each pass keeps the nearest fragment per pixel; the composition blends.
-    _passStateSet->setMode(GL_BLEND, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
-    _passStateSet->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, true),
-                                        osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+    _passStateSet = createDrawStateSet("osgGlyphs depth peeling", GLYPH_DEPTH_PEEL_DEFINE, nullptr);
 
     // Front to back: the accumulated colour C and alpha A take a layer (c, a) under them as
     // C + (1 - A) a c and A + (1 - A) a; then over the target's colour T as C + (1 - A) T.
@@ -131,21 +141,11 @@ PeelingPasses::PeelingPasses()
     // The k-buffer pass: fragments go into the buffer. Their colour is transparent black, which
     // the blending leaves out of the target (children of other programs draw as they are); their
     // depth is the farthest layer of a full list, which culls what lies behind it.
-    _kBufferStateSet = new osg::StateSet;
-    _kBufferStateSet->setName("osgGlyphs k-buffer");
-    _kBufferStateSet->setRenderBinDetails(DepthPeeling::RENDER_BIN_NUMBER, "RenderBin",
-                                          osg::StateSet::OVERRIDE_RENDERBIN_DETAILS);
-    _kBufferStateSet->setNestRenderBins(false);
-    _kBufferStateSet->setDefine(GLYPH_K_BUFFER_DEFINE);
-    _kBufferStateSet->addUniform(
-        new osg::Uniform("osgGlyphs_peelDepth", static_cast<int>(DEPTH_PEEL_TEXTURE_UNIT)));
+    _kBufferStateSet = createDrawStateSet(
+        "osgGlyphs k-buffer", GLYPH_K_BUFFER_DEFINE,
+        new osg::BlendFunc(osg::BlendFunc::SRC_ALPHA, osg::BlendFunc::ONE_MINUS_SRC_ALPHA));
     _kBufferSize = new osg::Uniform("osgGlyphs_kBufferSize", 0, 1);
     _kBufferStateSet->addUniform(_kBufferSize.get());
-    _kBufferStateSet->setAttributeAndModes(
-        new osg::BlendFunc(osg::BlendFunc::SRC_ALPHA, osg::BlendFunc::ONE_MINUS_SRC_ALPHA),
-        osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
-    _kBufferStateSet->setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, true),
-                                           osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
     _kBufferBinding = new osg::ShaderStorageBufferBinding(K_BUFFER_BINDING);
     _kBufferStateSet->setAttribute(_kBufferBinding.get());
 
