@@ -202,6 +202,7 @@ void PeelingPasses::resizeTargets(osg::State& state, int width, int height)
         state.applyTextureAttribute(LAYER_TEXTURE_UNIT, texture);
     state.haveAppliedTextureAttribute(LAYER_TEXTURE_UNIT, osg::StateAttribute::TEXTURE);
     _passStateSet->setTextureAttribute(DEPTH_PEEL_TEXTURE_UNIT, t.previousDepth.get());
+    _kBufferStateSet->setTextureAttribute(DEPTH_PEEL_TEXTURE_UNIT, t.opaqueDepth.get());
     const unsigned int PROTECTED = osg::StateAttribute::ON | osg::StateAttribute::PROTECTED;
     _underStateSet->setTextureAttribute(LAYER_TEXTURE_UNIT, t.layerColor.get(), PROTECTED);
     _overStateSet->setTextureAttribute(LAYER_TEXTURE_UNIT, t.accumulatedColor.get(), PROTECTED);
@@ -426,7 +427,6 @@ void PeelingPasses::drawKBuffer(osgUtil::RenderBin* bin, osg::RenderInfo& render
         resizeKBuffer(state, pixels, numLayers);
         _kBufferSize->set(rowPixels, layers);
     }
-    _kBufferStateSet->setTextureAttribute(DEPTH_PEEL_TEXTURE_UNIT, _targets.opaqueDepth.get());
 
     bin->drawImplementation(renderInfo, previous);
     osg::GLExtensions* ext = state.get<osg::GLExtensions>();
