@@ -1,10 +1,12 @@
 // One glyph cloud shared by the two views of an osgViewer::CompositeViewer, each view rendering
 // into a headless context of its own, with a cull thread per camera and a draw thread per context:
 // the two draw threads draw the same cloud at the same time, each while the next frame is culled.
-// Every frame of each view must equal that view rendered alone, single-threaded, to the bit.
+// Every frame of each view must equal that view rendered alone, single-threaded, to the bit; also
+// with the cloud transparent under a DepthPeeling node, whose buffers are per context.
 
 #include "RenderHarness.h"
 
+#include <osgGlyphs/DepthPeeling>
 #include <osgGlyphsData/RandomCloud>
 #include <osgGlyphsHeadless/FrameCapture>
 #include <osgGlyphsHeadless/HeadlessContext>
@@ -28,7 +30,9 @@ using namespace osgGlyphsTest;
 namespace
 {
 
+/** The frames each view draws; fewer for the transparent scenes, which draw slower. */
 const unsigned int NUM_FRAMES = 300;
+const unsigned int NUM_TRANSPARENT_FRAMES = 60;
 
 /** How long the draw threads may take to finish the frames dispatched to them. */
 const std::chrono::seconds DRAW_TIMEOUT(120);
@@ -60,10 +64,29 @@ osg::ref_ptr<osgGlyphs::GlyphCloud> createCloud()
     return cloud;
 }
 
-/** The cloud under numCopies transforms in a grid of 5 x 3 x 2, or alone for 1. */
-osg::ref_ptr<osg::Group> createScene(osgGlyphs::GlyphCloud* cloud, int numCopies)
+/** How the cloud is drawn: opaque, or at opacity 0.5 under a DepthPeeling node of a method. */
+struct SceneSpec
 {
-    osg::ref_ptr<osg::Group> root = new osg::Group;
+    int numCopies = 1;
+    bool transparent = false;
+    osgGlyphs::DepthPeeling::Method method = osgGlyphs::DepthPeeling::K_BUFFER;
+};
+
+/** The cloud under numCopies transforms in a grid of 5 x 3 x 2, or alone for 1; transparent, under
+ * a DepthPeeling node. */
+osg::ref_ptr<osg::Group> createScene(osgGlyphs::GlyphCloud* cloud, const SceneSpec& sceneSpec)
+{
+    const int numCopies = sceneSpec.numCopies;
+    osg::ref_ptr<osg::Group> root;
+    if (sceneSpec.transparent)
+    {
+        cloud->setOpacity(0.5f);
+        osg::ref_ptr<osgGlyphs::DepthPeeling> peeling = new osgGlyphs::DepthPeeling;
+        peeling->setMethod(sceneSpec.method);
+        root = peeling;
+    }
+    else
+        root = new osg::Group;
     if (numCopies == 1)
     {
         root->addChild(cloud);
@@ -216,7 +239,8 @@ std::string describe(const CheckingCapture& capture, const Reference& reference)
 {
     const std::vector<Mismatch>& mismatches = capture.getMismatches();
     std::ostringstream text;
-    text << mismatches.size() << " of " << NUM_FRAMES << " frames differ from the single-threaded render";
+    text << mismatches.size() << " of " << capture.getNumChecked()
+         << " frames differ from the single-threaded render";
     int vanished = 0;
     for (const Mismatch& mismatch : mismatches)
         vanished += mismatch.coveredPixels == 0 ? 1 : 0;
@@ -229,15 +253,15 @@ std::string describe(const CheckingCapture& capture, const Reference& reference)
     return text.str();
 }
 
-/** Renders NUM_FRAMES frames of the cloud, numCopies times per view, in both views at once,
- * and checks every one against each view rendered alone. */
-void renderTwoViewsInParallel(int numCopies, const std::string& name)
+/** Renders NUM_FRAMES (NUM_TRANSPARENT_FRAMES) frames of the cloud, numCopies times per view, in both views
+ * at once, and checks every one against each view rendered alone. */
+void renderTwoViewsInParallel(const SceneSpec& sceneSpec, const std::string& name)
 {
     const int numViews = sizeof(VIEWS) / sizeof(VIEWS[0]);
     std::vector<Reference> references;
     for (const ViewSpec& spec : VIEWS)
     {
-        references.push_back(renderAlone(createScene(createCloud().get(), numCopies).get(), spec));
+        references.push_back(renderAlone(createScene(createCloud().get(), sceneSpec).get(), spec));
         ASSERT_FALSE(references.back().empty())
             << spec.name << ": alone, no frame equals the one two before in " << MAX_REFERENCE_FRAMES;
         ASSERT_GT(countCoveredPixels(*references.back().back().depth), 1000)
@@ -245,7 +269,7 @@ void renderTwoViewsInParallel(int numCopies, const std::string& name)
     }
 
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = createCloud();
-    osg::ref_ptr<osg::Group> scene = createScene(cloud.get(), numCopies);
+    osg::ref_ptr<osg::Group> scene = createScene(cloud.get(), sceneSpec);
     osg::ref_ptr<osgViewer::CompositeViewer> viewer = new osgViewer::CompositeViewer;
     viewer->setThreadingModel(osgViewer::ViewerBase::CullThreadPerCameraDrawThreadPerContext);
     std::vector<osg::ref_ptr<CheckingCapture>> captures;
@@ -268,13 +292,14 @@ void renderTwoViewsInParallel(int numCopies, const std::string& name)
     }
 
     const auto start = std::chrono::steady_clock::now();
-    for (unsigned int frame = 0; frame < NUM_FRAMES; ++frame)
+    const unsigned int numFrames = sceneSpec.transparent ? NUM_TRANSPARENT_FRAMES : NUM_FRAMES;
+    for (unsigned int frame = 0; frame < numFrames; ++frame)
         viewer->frame();
     // frame() returns before its draws are done: wait for the last ones.
     const auto deadline = std::chrono::steady_clock::now() + DRAW_TIMEOUT;
     for (const osg::ref_ptr<CheckingCapture>& capture : captures)
     {
-        while (capture->getNumChecked() < NUM_FRAMES && std::chrono::steady_clock::now() < deadline)
+        while (capture->getNumChecked() < numFrames && std::chrono::steady_clock::now() < deadline)
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -285,8 +310,8 @@ void renderTwoViewsInParallel(int numCopies, const std::string& name)
         const CheckingCapture& capture = *captures[v];
         const std::string summary = describe(capture, references[v]);
         std::cout << name << ", view " << VIEWS[v].name << " (" << VIEWS[v].width << "x" << VIEWS[v].height
-                  << "): " << summary << "; " << NUM_FRAMES << " frames in " << seconds << " s" << std::endl;
-        ASSERT_EQ(capture.getNumChecked(), NUM_FRAMES) << VIEWS[v].name << ": frames not drawn in time";
+                  << "): " << summary << "; " << numFrames << " frames in " << seconds << " s" << std::endl;
+        ASSERT_EQ(capture.getNumChecked(), numFrames) << VIEWS[v].name << ": frames not drawn in time";
         if (!capture.getMismatches().empty())
         {
             const std::string prefix = name + "_" + VIEWS[v].name;
@@ -302,10 +327,22 @@ void renderTwoViewsInParallel(int numCopies, const std::string& name)
 
 TEST(SharedCloudTwoViews, EveryFrameOfEachViewIsItsSingleThreadedRender)
 {
-    renderTwoViewsInParallel(1, "shared_cloud_two_views");
+    renderTwoViewsInParallel(SceneSpec{}, "shared_cloud_two_views");
 }
 
 TEST(SharedCloudTwoViews, ThirtyTransformsOfTheCloudInEachView)
 {
-    renderTwoViewsInParallel(30, "shared_cloud_two_views_30_transforms");
+    renderTwoViewsInParallel(SceneSpec{30}, "shared_cloud_two_views_30_transforms");
+}
+
+TEST(SharedCloudTwoViews, TransparentThroughAKBuffer)
+{
+    renderTwoViewsInParallel(SceneSpec{1, true, osgGlyphs::DepthPeeling::K_BUFFER},
+                             "shared_cloud_two_views_k_buffer");
+}
+
+TEST(SharedCloudTwoViews, TransparentThroughPeelPasses)
+{
+    renderTwoViewsInParallel(SceneSpec{1, true, osgGlyphs::DepthPeeling::PEEL_PASSES},
+                             "shared_cloud_two_views_peel_passes");
 }
