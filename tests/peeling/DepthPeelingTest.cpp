@@ -328,8 +328,8 @@ TEST_P(DepthPeelingTest, StacksOfSmallSpheresPeelAsSortedInEitherArrayOrder)
 
 INSTANTIATE_TEST_SUITE_P(Methods, DepthPeelingTest,
                          ::testing::Values(DepthPeeling::K_BUFFER, DepthPeeling::PEEL_PASSES),
-                         [](const ::testing::TestParamInfo<DepthPeeling::Method>& info)
-                         { return info.param == DepthPeeling::K_BUFFER ? "KBuffer" : "PeelPasses"; });
+                         [](const ::testing::TestParamInfo<DepthPeeling::Method>& method)
+                         { return method.param == DepthPeeling::K_BUFFER ? "KBuffer" : "PeelPasses"; });
 
 TEST(DepthPeelingMethods, KBufferKeepsTheLayersPeelPassesKeepInADenseCloud)
 {
