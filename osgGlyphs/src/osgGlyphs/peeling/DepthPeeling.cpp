@@ -131,7 +131,7 @@ void DepthPeeling::traverse(osg::NodeVisitor& nv)
     }
     detail::PeelingPasses* passes = getPasses(cv->getState()->getContextID());
     passes->setNumLayers(_numLayers);
-    passes->setMethod(drawsMultisampled(*cv) ? PEEL_PASSES : _method, *cv->getState(), cv->getViewport());
+    passes->setMethod(drawsMultisampled(*cv) ? PEEL_PASSES : _method, cv->getViewport());
     cv->pushStateSet(passes->getPassStateSet());
     cv->getCurrentRenderBin()->setDrawCallback(passes->getDrawCallback().get());
     osg::Group::traverse(nv);

@@ -247,11 +247,10 @@ private:
     unsigned int _layers;
 };
 
-/** Whether a context has what the k-buffer needs: known once OSG has set up its extensions. */
-bool supportsKBuffer(const osg::State& state)
+/** Whether a context has what the k-buffer needs. */
+bool supportsKBuffer(const osg::GLExtensions& ext)
 {
-    const osg::GLExtensions* ext = osg::GLExtensions::Get(state.getContextID(), false);
-    return ext && ext->glVersion >= 4.3f && ext->glMemoryBarrier && ext->isFrameBufferObjectSupported;
+    return ext.glVersion >= 4.3f && ext.glMemoryBarrier && ext.isFrameBufferObjectSupported;
 }
 
 /** The bytes of a k-buffer for a viewport (from the window's origin) and a number of layers. */
@@ -262,10 +261,9 @@ long long kBufferBytes(double rowPixels, double rows, unsigned int layers)
 
 }
 
-void PeelingPasses::setMethod(DepthPeeling::Method method, const osg::State& state,
-                              const osg::Viewport* viewport)
+void PeelingPasses::setMethod(DepthPeeling::Method method, const osg::Viewport* viewport)
 {
-    bool kBuffer = method == DepthPeeling::K_BUFFER && supportsKBuffer(state);
+    bool kBuffer = method == DepthPeeling::K_BUFFER && _kBufferSupport != 0;
     if (kBuffer && viewport)
         kBuffer = kBufferBytes(viewport->x() + viewport->width(), viewport->y() + viewport->height(),
                                _numLayers) <= _maxKBufferBytes;
@@ -303,6 +301,7 @@ void PeelingPasses::drawPeelPasses(osgUtil::RenderBin* bin, osg::RenderInfo& ren
 {
     osg::State& state = *renderInfo.getState();
     osg::GLExtensions* ext = state.get<osg::GLExtensions>();
+    _kBufferSupport = supportsKBuffer(*ext) ? 1 : 0;
     if (!ext->isFrameBufferObjectSupported || !ext->glBlitFramebuffer)
     {
         bin->drawImplementation(renderInfo, previous);
@@ -396,6 +395,16 @@ void PeelingPasses::drawKBuffer(osgUtil::RenderBin* bin, osg::RenderInfo& render
                                 osgUtil::RenderLeaf*& previous, unsigned int numLayers)
 {
     osg::State& state = *renderInfo.getState();
+    osg::GLExtensions* ext = state.get<osg::GLExtensions>();
+    _kBufferSupport = supportsKBuffer(*ext) ? 1 : 0;
+    if (!_kBufferSupport)
+    {
+        // Only before a draw told the cull: the next frame peels in passes.
+        OSG_WARN << "osgGlyphs::DepthPeeling: the k-buffer needs OpenGL 4.3; transparent children are "
+                    "left out of this frame"
+                 << std::endl;
+        return;
+    }
     GLint viewport[4] = {0, 0, 0, 0};
     glGetIntegerv(GL_VIEWPORT, viewport);
     if (viewport[2] <= 0 || viewport[3] <= 0)
@@ -429,7 +438,6 @@ void PeelingPasses::drawKBuffer(osgUtil::RenderBin* bin, osg::RenderInfo& render
     }
 
     bin->drawImplementation(renderInfo, previous);
-    osg::GLExtensions* ext = state.get<osg::GLExtensions>();
     ext->glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     openWriteMasks(state);
     compose(renderInfo, _resolveStateSet.get());

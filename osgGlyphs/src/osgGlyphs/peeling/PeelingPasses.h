@@ -31,10 +31,10 @@ public:
 
     void setNumLayers(unsigned int layers) { _numLayers = layers; }
 
-    /** The method of the next cull; K_BUFFER falls back to PEEL_PASSES where the context lacks
-     * OpenGL 4.3, or where the k-buffer of the viewport would exceed the context's largest shader
-     * storage block. */
-    void setMethod(DepthPeeling::Method method, const osg::State& state, const osg::Viewport* viewport);
+    /** The method of the next cull; K_BUFFER falls back to PEEL_PASSES where a draw found that
+     * the context lacks OpenGL 4.3, or where the k-buffer of the viewport would exceed the context's largest
+     * shader storage block. */
+    void setMethod(DepthPeeling::Method method, const osg::Viewport* viewport);
 
     /** Above the drawables: the render bin, the method's define and its textures and buffer. */
     osg::StateSet* getPassStateSet();
@@ -84,6 +84,9 @@ protected:
     /** GL_MAX_SHADER_STORAGE_BLOCK_SIZE, once a draw has asked; until then Mesa's and the usual
      * desktop drivers' least. */
     std::atomic<long long> _maxKBufferBytes{1ll << 27};
+    /** Whether the context has OpenGL 4.3, once a draw has looked (-1 until then: the cull
+     * assumes it, so that every frame of a context draws alike). */
+    std::atomic<int> _kBufferSupport{-1};
     DepthPeeling::Method _method = DepthPeeling::PEEL_PASSES;
     Targets _targets;
     osg::ref_ptr<osg::StateSet> _passStateSet;
