@@ -1,4 +1,5 @@
 #include <osgGlyphs/DepthPeeling>
+#include <osgGlyphs/GlyphStateCache>
 
 #include "PeelingPasses.h"
 
@@ -151,6 +152,11 @@ void DepthPeeling::releaseGLObjects(osg::State* state) const
 void DepthPeeling::resizeGLObjectBuffers(unsigned int maxSize)
 {
     osg::Group::resizeGLObjectBuffers(maxSize);
+    // The composition programs are shared by the contexts, outside the scene graph: sized here
+    // (the viewer calls this before its threads start), or two contexts' first draws would
+    // grow their per-context lists at once.
+    GlyphStateCache::instance()->getPeelingCompositeProgram()->resizeGLObjectBuffers(maxSize);
+    GlyphStateCache::instance()->getKBufferResolveProgram()->resizeGLObjectBuffers(maxSize);
     ContextPasses& all = contextPasses();
     std::lock_guard<std::mutex> lock(all.mutex);
     if (all.passes.size() < maxSize)
