@@ -1,6 +1,7 @@
 #include <osgGlyphs/DepthPeeling>
 #include <osgGlyphs/GlyphStateCache>
 
+#include "../state/ViewState.h"
 #include "PeelingPasses.h"
 
 #include <osg/ContextData>
@@ -88,23 +89,6 @@ detail::PeelingPasses* getPasses(unsigned int contextID)
     return all.passes[contextID].get();
 }
 
-/** Whether the render stage being culled draws into multisampled buffers, whose depth the passes
- * cannot copy. */
-bool drawsMultisampled(osgUtil::CullVisitor& cv)
-{
-    const osg::Camera* camera = cv.getCurrentCamera();
-    if (camera && camera->getRenderTargetImplementation() == osg::Camera::FRAME_BUFFER_OBJECT &&
-        !camera->getBufferAttachmentMap().empty())
-    {
-        for (const auto& attachment : camera->getBufferAttachmentMap())
-            if (attachment.second._multisampleSamples > 0)
-                return true;
-        return false;
-    }
-    const osg::GraphicsContext* context = cv.getState()->getGraphicsContext();
-    return context && context->getTraits() && context->getTraits()->samples > 0;
-}
-
 /** Whether the render stage being culled draws colour: not so a shadow map's, which takes the
  * children's depth as they are. */
 bool drawsColor(osgUtil::CullVisitor& cv)
@@ -132,7 +116,9 @@ void DepthPeeling::traverse(osg::NodeVisitor& nv)
     }
     detail::PeelingPasses* passes = getPasses(cv->getState()->getContextID());
     passes->setNumLayers(_numLayers);
-    passes->setMethod(drawsMultisampled(*cv) ? PEEL_PASSES : _method, cv->getViewport());
+    passes->setMethod(!detail::isSingleSampled(cv->getCurrentCamera(), cv->getState()) ? PEEL_PASSES
+                                                                                       : _method,
+                      cv->getViewport());
     cv->pushStateSet(passes->getPassStateSet());
     cv->getCurrentRenderBin()->setDrawCallback(passes->getDrawCallback().get());
     osg::Group::traverse(nv);

@@ -9,22 +9,6 @@ namespace
 
 const char* const VIEW_STATE_NAME = "osgGlyphs view state";
 
-/** Whether the camera's target has one sample per pixel: an FBO camera's attachments, else
- * the context's traits. Unsure (no context) counts as multisampled. */
-bool isSingleSampled(const osg::Camera* camera, const osg::State* state)
-{
-    if (camera && camera->getRenderTargetImplementation() == osg::Camera::FRAME_BUFFER_OBJECT &&
-        !camera->getBufferAttachmentMap().empty())
-    {
-        for (const auto& attachment : camera->getBufferAttachmentMap())
-            if (attachment.second._multisampleSamples > 0)
-                return false;
-        return true;
-    }
-    const osg::GraphicsContext* context = state ? state->getGraphicsContext() : nullptr;
-    return context && context->getTraits() && context->getTraits()->samples == 0;
-}
-
 osg::ref_ptr<osg::StateSet> createViewStateSet()
 {
     osg::ref_ptr<osg::StateSet> stateSet = new osg::StateSet;
@@ -76,4 +60,18 @@ osg::StateSet* osgGlyphs::detail::getViewStateSet(osgUtil::CullVisitor& cv)
     update(*stateSet->getUniform("osgGlyphs_singleSample"),
            isSingleSampled(cv.getCurrentCamera(), cv.getState()));
     return stateSet;
+}
+
+bool osgGlyphs::detail::isSingleSampled(const osg::Camera* camera, const osg::State* state)
+{
+    if (camera && camera->getRenderTargetImplementation() == osg::Camera::FRAME_BUFFER_OBJECT &&
+        !camera->getBufferAttachmentMap().empty())
+    {
+        for (const auto& attachment : camera->getBufferAttachmentMap())
+            if (attachment.second._multisampleSamples > 0)
+                return false;
+        return true;
+    }
+    const osg::GraphicsContext* context = state ? state->getGraphicsContext() : nullptr;
+    return context && context->getTraits() && context->getTraits()->samples == 0;
 }

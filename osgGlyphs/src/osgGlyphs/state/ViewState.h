@@ -17,6 +17,10 @@ namespace detail
  * while it is culled, so views of any size, in any threading model, each draw with their own. */
 osg::StateSet* getViewStateSet(osgUtil::CullVisitor& cv);
 
+/** Whether the camera's target has one sample per pixel: an FBO camera's attachments, else
+ * the context's traits. Unsure (no context) counts as multisampled. */
+bool isSingleSampled(const osg::Camera* camera, const osg::State* state);
+
 }
 }
 
