@@ -10,7 +10,9 @@
 // osgGlyphs_vector: direction and magnitude per glyph (vector shapes only).
 // osgGlyphs_ambientOcclusion: RGBA8 per glyph (OSGGLYPHS_AMBIENT_OCCLUSION only): rgb the model-space
 //   direction term of the light reaching the glyph, mapped from [-1, 1], a its mean.
-// osgGlyphs_position: the glyph's position, for instanced techniques (else gl_Vertex).
+// osgGlyphs_position: the glyph's position, for instanced techniques (else gl_Vertex); with
+//   OSGGLYPHS_COMPRESSED_POSITIONS, 16-bit integers q on the grid osgGlyphs_positionGrid:
+//   position = offset + q * step (xyz offset, w step; a power of two, so the product is exact).
 // Vertex stages only.
 
 #include "glyph.glsl"
@@ -18,6 +20,9 @@
 
 uniform float osgGlyphs_radiusScale;
 uniform vec4 osgGlyphs_baseColor;
+#ifdef OSGGLYPHS_COMPRESSED_POSITIONS
+uniform vec4 osgGlyphs_positionGrid;
+#endif
 #ifdef OSGGLYPHS_COLOR_SCALAR
 uniform sampler1D osgGlyphs_colormap;
 uniform vec2 osgGlyphs_scalarToColormap; // colormap coordinate = quantised * x + y
@@ -71,10 +76,14 @@ vec4 glyphColor()
 vec4 glyphPosition()
 {
 #ifdef OSGGLYPHS_PER_INSTANCE
-    return vec4(osgGlyphs_position, 1.0);
+    vec3 position = osgGlyphs_position;
 #else
-    return gl_Vertex;
+    vec3 position = gl_Vertex.xyz;
 #endif
+#ifdef OSGGLYPHS_COMPRESSED_POSITIONS
+    position = osgGlyphs_positionGrid.xyz + position * osgGlyphs_positionGrid.w;
+#endif
+    return vec4(position, 1.0);
 }
 
 Glyph decodeGlyph()

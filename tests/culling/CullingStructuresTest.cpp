@@ -15,6 +15,19 @@
 
 using namespace osgGlyphs::detail;
 
+namespace
+{
+
+std::vector<unsigned int> orderOf(const GlyphChunks& chunks)
+{
+    std::vector<unsigned int> ids(chunks.order->getNumIndices());
+    for (unsigned int k = 0; k < ids.size(); ++k)
+        ids[k] = chunks.order->index(k);
+    return ids;
+}
+
+}
+
 TEST(DepthPyramid, BoundsEveryRectangleFromAbove)
 {
     std::mt19937 random(3);
@@ -71,14 +84,15 @@ TEST(GlyphChunks, OrderIsAPermutationOfTheDrawnGlyphsAndBoxesHoldThem)
     }
     const GlyphChunks chunks = buildGlyphChunks(
         unsigned(boxes.size()), [&](unsigned int i) { return boxes[i]; }, 64);
-    std::multiset<unsigned int> ids(chunks.order->begin(), chunks.order->end());
+    const std::vector<unsigned int> order = orderOf(chunks);
+    std::multiset<unsigned int> ids(order.begin(), order.end());
     unsigned int drawn = 0;
     for (unsigned int i = 0; i < boxes.size(); ++i)
     {
         drawn += boxes[i].valid();
         EXPECT_EQ(ids.count(i), boxes[i].valid() ? 1u : 0u) << i;
     }
-    EXPECT_EQ(chunks.order->size(), drawn);
+    EXPECT_EQ(order.size(), drawn);
     unsigned int covered = 0;
     for (const GlyphChunk& chunk : chunks.chunks)
     {
@@ -86,7 +100,7 @@ TEST(GlyphChunks, OrderIsAPermutationOfTheDrawnGlyphsAndBoxesHoldThem)
         covered += chunk.count;
         for (unsigned int k = chunk.first; k < chunk.first + chunk.count; ++k)
         {
-            const osg::BoundingBox& box = boxes[(*chunks.order)[k]];
+            const osg::BoundingBox& box = boxes[order[k]];
             EXPECT_TRUE(chunk.box.contains(box._min) && chunk.box.contains(box._max));
         }
     }
@@ -106,8 +120,30 @@ TEST(GlyphChunks, BoxesBeyondTheRangeOfAFloatAreOrderedToo)
     boxes[3].set(huge, huge, huge, std::numeric_limits<float>::infinity(), huge, huge);
     const GlyphChunks chunks = buildGlyphChunks(
         unsigned(boxes.size()), [&](unsigned int i) { return boxes[i]; }, 1);
-    const std::multiset<unsigned int> ids(chunks.order->begin(), chunks.order->end());
+    const std::vector<unsigned int> order = orderOf(chunks);
+    const std::multiset<unsigned int> ids(order.begin(), order.end());
     EXPECT_EQ(ids, (std::multiset<unsigned int>{0, 1, 2, 3}));
+}
+
+// Up to 65,536 glyphs the order takes 16 bits per glyph on the GPU; above, 32.
+TEST(GlyphChunks, SmallCloudsOrderTheirGlyphsWith16BitIndices)
+{
+    for (unsigned int count : {65536u, 65537u})
+    {
+        const GlyphChunks chunks = buildGlyphChunks(
+            count,
+            [&](unsigned int i)
+            {
+                const osg::Vec3 centre(float(i % 64), float(i / 64 % 64), float(i / 4096));
+                return osg::BoundingBox(centre - osg::Vec3(0.4f, 0.4f, 0.4f), centre + osg::Vec3(0.4f, 0.4f, 0.4f));
+            },
+            512);
+        EXPECT_EQ(chunks.order->getDataType(), GLenum(count <= 65536u ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT));
+        const std::vector<unsigned int> order = orderOf(chunks);
+        const std::set<unsigned int> ids(order.begin(), order.end());
+        ASSERT_EQ(ids.size(), count);
+        EXPECT_EQ(*ids.rbegin(), count - 1); // the largest id survives the narrower type
+    }
 }
 
 namespace

@@ -161,12 +161,86 @@ TEST_F(GlyphCloudData, GPUFootprintPerGlyph)
 {
     osg::ref_ptr<GlyphCloud> cloud = createScalarRow({0.0f, 1.0f, 2.0f, 3.0f});
     cloud->setRadii(makeArray<osg::FloatArray>({0.5f, 0.6f, 0.7f, 0.8f}));
-    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 20.0) << "position + radius + scalar + the spatial order's index";
+    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 18.0) << "position + radius + scalar + the spatial order's 16-bit index";
+    cloud->setCompressedPositions(true);
+    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 12.0) << "16-bit position + radius + scalar + index";
+    cloud->setCompressedPositions(false);
     cloud->setCulling(osgGlyphs::GlyphCulling::Off);
     EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 16.0) << "position + radius + scalar";
     cloud->setColors(makeArray<osg::Vec4ubArray>({osg::Vec4ub(1, 2, 3, 4), osg::Vec4ub(1, 2, 3, 4),
                                                   osg::Vec4ub(1, 2, 3, 4), osg::Vec4ub(1, 2, 3, 4)}));
     EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 20.0) << "position + radius + RGBA8";
+}
+
+// Compressed positions: the nearest points of a power-of-two grid that spans the box in 65,532
+// steps, which compress to themselves; the host arrays keep the caller's values.
+TEST_F(GlyphCloudData, CompressedPositionsAreTheNearestPointsOfTheirGrid)
+{
+    const osg::Vec3 low(1000.0f, -2.0f, 0.0f), size(3.0f, 1.0f, 0.001f);
+    osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
+    for (int i = 0; i < 5000; ++i)
+        positions->push_back(low + osg::Vec3(size.x() * std::fmod(0.618034f * i, 1.0f),
+                                              size.y() * std::fmod(0.414214f * i, 1.0f),
+                                              size.z() * std::fmod(0.732051f * i, 1.0f)));
+    positions->push_back(osg::Vec3(std::nanf(""), 0.0f, 0.0f));
+    osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+    cloud->setPositions(positions.get());
+    cloud->setRadius(0.01f);
+    cloud->setCompressedPositions(true);
+    EXPECT_EQ(cloud->getPositions(), positions.get());
+
+    const osg::Vec4 grid = cloud->getPositionGrid();
+    int exponent = 0;
+    EXPECT_EQ(std::frexp(grid.w(), &exponent), 0.5f) << "a power of two: " << grid.w();
+    double extent = 0.0;
+    for (const osg::Vec3& p : *positions)
+        if (std::isfinite(p.x()))
+            extent = std::max(extent, double(p.x()) - low.x());
+    EXPECT_LE(extent, 65532.0 * grid.w());
+    EXPECT_GT(extent, 65532.0 * grid.w() / 2.0);
+
+    const osg::ref_ptr<osg::Vec3Array> drawn = cloud->computeDrawnPositions();
+    ASSERT_EQ(drawn->size(), positions->size());
+    double largestError = 0.0;
+    for (std::size_t i = 0; i + 1 < positions->size(); ++i)
+        for (int axis = 0; axis < 3; ++axis)
+        {
+            const double error = std::abs(double((*drawn)[i][axis]) - double((*positions)[i][axis]));
+            largestError = std::max(largestError, error);
+            const double steps = (double((*drawn)[i][axis]) - grid[axis]) / grid.w();
+            EXPECT_EQ(steps, std::round(steps)) << i; // on the grid
+        }
+    EXPECT_LE(largestError, grid.w() / 2.0);
+    EXPECT_GT(largestError, grid.w() / 4.0) << "the positions were quantised";
+    EXPECT_TRUE(std::isnan(drawn->back().x())) << "a skipped glyph stays skipped";
+    EXPECT_EQ(cloud->getNumSkippedGlyphs(), 1u);
+
+    // The box and the picked surfaces are the drawn glyphs'.
+    EXPECT_NEAR(cloud->getLocalBoundingBox().xMin(), 1000.0f - 0.01f, grid.w());
+    osg::BoundingBox drawnBox;
+    for (std::size_t i = 0; i + 1 < drawn->size(); ++i)
+        drawnBox.expandBy(cloud->computeGlyphBox(unsigned(i)));
+    EXPECT_EQ(drawnBox.xMax(), cloud->getLocalBoundingBox().xMax());
+
+    // Grid points compress to themselves, through a cloud or through the 16-bit values.
+    osg::ref_ptr<GlyphCloud> again = new GlyphCloud;
+    again->setPositions(drawn.get());
+    again->setCompressedPositions(true);
+    const osg::ref_ptr<osg::Vec3Array> drawnAgain = again->computeDrawnPositions();
+    for (std::size_t i = 0; i + 1 < drawn->size(); ++i)
+        ASSERT_EQ((*drawnAgain)[i], (*drawn)[i]) << i;
+    const auto* quantised = dynamic_cast<const osg::Vec3sArray*>(cloud->getGlyphArrays().positions);
+    ASSERT_NE(quantised, nullptr);
+    osg::ref_ptr<GlyphCloud> fromIntegers = new GlyphCloud;
+    fromIntegers->setCompressedPositions(*quantised, grid);
+    EXPECT_TRUE(fromIntegers->getCompressedPositions());
+    for (std::size_t i = 0; i + 1 < drawn->size(); ++i)
+        ASSERT_EQ((*fromIntegers->getPositions())[i], (*drawn)[i]) << i;
+
+    // Off again: the caller's floats reach the GPU.
+    cloud->setCompressedPositions(false);
+    EXPECT_EQ(cloud->getGlyphArrays().positions, positions.get());
+    EXPECT_EQ((*cloud->computeDrawnPositions())[7], (*positions)[7]);
 }
 
 TEST_F(GlyphCloudData, RadiiKeepTheirPrecisionAtAnyScale)

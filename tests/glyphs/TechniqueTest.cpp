@@ -201,6 +201,35 @@ TEST_P(Techniques, DisplayListsDrawWhatBufferObjectsDraw)
     }
 }
 
+// Every technique decodes compressed positions: a cloud drawn from its 16-bit positions draws the
+// pixels and depths of one drawn from the same grid points as floats. The glyphs sit far from
+// their origin, so that a grid offset left out would move them.
+TEST_P(Techniques, CompressedPositionsDrawTheirGridPointsExactly)
+{
+    const osg::Vec3 shift(30.0f, -12.0f, 5.0f);
+    for (const std::string& name : osgGlyphs::getTechniqueNames())
+    {
+        osg::ref_ptr<GlyphCloud> compressed = createScene(GetParam()), floats = createScene(GetParam());
+        for (GlyphCloud* cloud : {compressed.get(), floats.get()})
+        {
+            osg::ref_ptr<osg::Vec3Array> shifted = new osg::Vec3Array(*cloud->getPositions());
+            for (osg::Vec3& p : *shifted)
+                p += shift;
+            cloud->setPositions(shifted.get());
+            cloud->setOrigin(-shift);
+            cloud->setTechnique(osgGlyphs::createTechnique(name).get());
+        }
+        compressed->setCompressedPositions(true);
+        floats->setPositions(compressed->computeDrawnPositions().get());
+        const Frame expected = renderer.render(group({floats.get()}).get());
+        const Comparison comparison = compare(renderer.render(group({compressed.get()}).get()), expected, 0, 0.0f);
+        EXPECT_GT(comparison.coveredBoth, name == "points-floor" ? 6 : 300) << name;
+        EXPECT_EQ(comparison.coveredBoth, comparison.coveredEither) << name;
+        EXPECT_EQ(comparison.differingColor, 0) << name;
+        EXPECT_EQ(comparison.differingDepth, 0) << name;
+    }
+}
+
 TEST(TechniqueNames, EveryRegisteredNameCreatesItsTechnique)
 {
     const std::vector<std::string> names = osgGlyphs::getTechniqueNames();

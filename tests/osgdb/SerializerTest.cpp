@@ -11,7 +11,10 @@
 #include <osgDB/ReadFile>
 #include <osgDB/WriteFile>
 
+#include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <map>
 
 using namespace osgGlyphsTest;
 using osgGlyphs::GlyphCloud;
@@ -230,6 +233,50 @@ TEST_P(NativeFormats, ScreenEffectsAndDepthPeelingRoundTrip)
         }
     EXPECT_EQ(differing, 0);
     EXPECT_GT(changed, 200);
+}
+
+// Compressed positions are written as their 16-bit integers and grid (6 bytes a glyph instead of 12)
+// and read back as the grid points the GPU drew, which draw the same picture.
+TEST_P(NativeFormats, CompressedPositionsRoundTripAsTheirGridPoints)
+{
+    osg::ref_ptr<GlyphCloud> original = new GlyphCloud;
+    osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
+    for (int i = 0; i < 2000; ++i)
+        positions->push_back(osg::Vec3(std::sin(0.37f * i), std::cos(0.61f * i), 0.001f * i - 1.0f) * 1.3f +
+                             osg::Vec3(40.0f, -7.0f, 3.0f));
+    original->setPositions(positions.get());
+    original->setOrigin(osg::Vec3d(-40.0, 7.0, -3.0));
+    original->setRadius(0.05f);
+    std::map<bool, std::uintmax_t> bytes;
+    for (bool compressed : {false, true})
+    {
+        original->setCompressedPositions(compressed);
+        const std::string path = outputPath(std::string("positions_") + (compressed ? "16" : "32") + "." + GetParam());
+        ASSERT_TRUE(osgDB::writeObjectFile(*original, path)) << path;
+        bytes[compressed] = std::filesystem::file_size(path);
+        osg::ref_ptr<GlyphCloud> copy = osgDB::readRefFile<GlyphCloud>(path);
+        ASSERT_TRUE(copy.valid()) << path;
+        EXPECT_EQ(copy->getCompressedPositions(), compressed);
+        EXPECT_TRUE(sameBits(original->computeDrawnPositions().get(), copy->getPositions())) << path;
+        EXPECT_TRUE(sameBits(original->computeDrawnPositions().get(), copy->computeDrawnPositions().get())) << path;
+        Renderer renderer(160, 120);
+        const Frame expected = renderer.render(group({original.get()}).get());
+        const Frame actual = renderer.render(group({copy.get()}).get());
+        int differing = 0, covered = 0;
+        for (int y = 0; y < expected.height(); ++y)
+            for (int x = 0; x < expected.width(); ++x)
+            {
+                differing += expected.colorAt(x, y) != actual.colorAt(x, y) ||
+                                     expected.depthAt(x, y) != actual.depthAt(x, y)
+                                 ? 1
+                                 : 0;
+                covered += actual.isCovered(x, y) ? 1 : 0;
+            }
+        EXPECT_EQ(differing, 0) << path;
+        EXPECT_GT(covered, 1000) << path;
+    }
+    if (GetParam() == "osgb")
+        EXPECT_LE(bytes[true] + 2000 * 6, bytes[false] + 128) << "6 bytes less per glyph, and the grid";
 }
 
 INSTANTIATE_TEST_SUITE_P(, NativeFormats, ::testing::Values("osgt", "osgb", "osgx"),

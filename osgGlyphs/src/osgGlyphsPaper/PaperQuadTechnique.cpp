@@ -29,6 +29,10 @@ osg::ref_ptr<osg::Array> repeatFourTimes(const osg::Array* array, unsigned int c
 {
     if (const osg::UIntArray* words = dynamic_cast<const osg::UIntArray*>(array))
         return repeatFourTimes(words, count);
+    if (const osg::Vec3Array* vectors = dynamic_cast<const osg::Vec3Array*>(array))
+        return repeatFourTimes(vectors, count);
+    if (const osg::Vec3sArray* quantised = dynamic_cast<const osg::Vec3sArray*>(array))
+        return repeatFourTimes(quantised, count);
     return repeatFourTimes(dynamic_cast<const osg::Vec2Array*>(array), count);
 }
 
@@ -54,7 +58,7 @@ void PaperQuadTechnique::buildPrimitives(GlyphCloud& cloud, const GlyphArrays& a
 {
     // The paper's data path: four vertices per glyph, each with a copy of its attributes.
     GlyphArrays copies;
-    osg::ref_ptr<osg::Vec3Array> positions = repeatFourTimes(arrays.positions, arrays.count);
+    osg::ref_ptr<osg::Array> positions = repeatFourTimes(arrays.positions, arrays.count);
     osg::ref_ptr<osg::Array> radiusScalar = repeatFourTimes(arrays.radiusScalar, arrays.count);
     osg::ref_ptr<osg::Vec4ubArray> colors = repeatFourTimes(arrays.colors, arrays.count);
     osg::ref_ptr<osg::Vec3Array> vectors = repeatFourTimes(arrays.vectors, arrays.count);

@@ -4,7 +4,9 @@
 #include "../culling/ChunkDrawer.h"
 #include "../state/ClipPlaneState.h"
 #include "../state/ViewState.h"
+#include "../state/GlyphDefines.h"
 #include "FlattenedTransforms.h"
+#include "PositionGrid.h"
 
 #include <osg/Depth>
 #include <osg/Uniform>
@@ -40,6 +42,7 @@ GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
       _radius(other._radius), _color(other._color), _colorMode(other._colorMode), _shape(other._shape),
       _anchor(other._anchor), _lengthScale(other._lengthScale), _uniformLength(other._uniformLength),
       _arrowParams(other._arrowParams), _lit(other._lit), _compressedAttributes(other._compressedAttributes),
+      _compressedPositions(other._compressedPositions),
       _autoRange(other._autoRange), _rangeMin(other._rangeMin), _rangeMax(other._rangeMax),
       _material(other._material), _opacity(other._opacity), _culling(other._culling),
       _cullingChunkSize(other._cullingChunkSize), _selection(other._selection),
@@ -60,6 +63,7 @@ void GlyphCloud::initialize()
     _packed = new osg::UIntArray;
     _packed->setPreserveDataType(true); // an integer attribute: glVertexAttribIPointer
     _unpacked = new osg::Vec2Array;
+    _quantisedPositions = new osg::Vec3sArray;
     // The cloud's own values, in a StateSet of its own: each copy gets its own.
     _cloudStateSet = new osg::StateSet;
     _cloudStateSet->setName("osgGlyphs cloud");
@@ -70,10 +74,11 @@ void GlyphCloud::initialize()
     _vectorParamsUniform = new osg::Uniform("osgGlyphs_vectorParams", osg::Vec3());
     _arrowParamsUniform = new osg::Uniform("osgGlyphs_arrowParams", _arrowParams);
     _opacityUniform = new osg::Uniform("osgGlyphs_opacity", _opacity);
+    _positionGridUniform = new osg::Uniform("osgGlyphs_positionGrid", _positionGrid);
     for (osg::Uniform* uniform :
          {_radiusScaleUniform.get(), _baseColorUniform.get(), _scalarToColormapUniform.get(),
           _materialUniform.get(), _vectorParamsUniform.get(), _arrowParamsUniform.get(),
-          _opacityUniform.get()})
+          _opacityUniform.get(), _positionGridUniform.get()})
         _cloudStateSet->addUniform(uniform);
     updateVectorUniforms();
     if (!_colorMap)
@@ -278,6 +283,40 @@ void GlyphCloud::setCompressedAttributes(bool compressed)
     updateStateSet();
 }
 
+void GlyphCloud::setCompressedPositions(bool compressed)
+{
+    if (compressed == _compressedPositions)
+        return;
+    _compressedPositions = compressed;
+    packPositions();
+    updateChunks(); // the chunk boxes hold the positions as the GPU draws them
+    buildPrimitives();
+    dirtyBound();
+}
+
+void GlyphCloud::setCompressedPositions(const osg::Vec3sArray& quantised, const osg::Vec4& grid)
+{
+    detail::PositionGrid decoder;
+    decoder.offset.set(grid.x(), grid.y(), grid.z());
+    decoder.step = grid.w();
+    osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array(quantised.size());
+    for (std::size_t i = 0; i < quantised.size(); ++i)
+        (*positions)[i] = decoder.decode(quantised[i]);
+    _compressedPositions = true;
+    setPositions(positions.get());
+}
+
+osg::ref_ptr<osg::Vec3Array> GlyphCloud::computeDrawnPositions() const
+{
+    if (!_positions.valid())
+        return nullptr;
+    osg::ref_ptr<osg::Vec3Array> drawn = new osg::Vec3Array(*_positions, osg::CopyOp::DEEP_COPY_ALL);
+    for (unsigned int i = 0; _compressedPositions && i < drawn->size(); ++i)
+        if (std::isfinite((*drawn)[i].length2()))
+            (*drawn)[i] = drawnPosition(i);
+    return drawn;
+}
+
 void GlyphCloud::setMaterial(float ambient, float specular, float shininess)
 {
     _material.set(ambient, specular, shininess);
@@ -367,7 +406,7 @@ void GlyphCloud::updateStateSet()
 GlyphArrays GlyphCloud::getGlyphArrays() const
 {
     GlyphArrays arrays;
-    arrays.positions = _positions.get();
+    arrays.positions = _compressedPositions ? static_cast<osg::Array*>(_quantisedPositions.get()) : _positions.get();
     arrays.radiusScalar = _compressedAttributes ? static_cast<osg::Array*>(_packed.get()) : _unpacked.get();
     arrays.colors = _colorMode == GlyphColorMode::RGBA ? _colors.get() : nullptr;
     arrays.vectors = hasVectorShape() ? _vectors.get() : nullptr;
@@ -384,10 +423,12 @@ void GlyphCloud::buildPrimitives()
     const auto builtFor =
         std::make_tuple(technique, arrays.positions, arrays.radiusScalar, arrays.colors, arrays.vectors,
                         arrays.occlusion, arrays.count, static_cast<const osg::PrimitiveSet*>(arrays.order));
-    if (arrays.occlusion)
-        _cloudStateSet->setDefine(GLYPH_AMBIENT_OCCLUSION_DEFINE);
-    else
-        _cloudStateSet->removeDefine(GLYPH_AMBIENT_OCCLUSION_DEFINE);
+    for (const auto& [define, on] : {std::make_pair(GLYPH_AMBIENT_OCCLUSION_DEFINE, arrays.occlusion != nullptr),
+                                     std::make_pair(detail::COMPRESSED_POSITIONS_DEFINE, _compressedPositions)})
+        if (on)
+            _cloudStateSet->setDefine(define);
+        else
+            _cloudStateSet->removeDefine(define);
     if (builtFor == _builtFor && !technique->copiesArrays())
         return; // the same arrays, drawn the same way: changed contents upload by themselves
     _builtFor = builtFor;

@@ -58,7 +58,7 @@ bool GlyphCloud::getGlyphSolid(unsigned int i, detail::GlyphSolid& solid) const
     const float radius = decodeRadius(i);
     if (radius == 0.0f)
         return false;
-    const osg::Vec3& p = (*_positions)[i];
+    const osg::Vec3 p = drawnPosition(i);
     solid.shape = _shape;
     solid.radius = radius;
     solid.base = glm::dvec3(p.x(), p.y(), p.z());

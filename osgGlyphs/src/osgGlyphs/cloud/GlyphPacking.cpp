@@ -2,6 +2,7 @@
 #include <osgGlyphs/GlyphCloud>
 
 #include "HalfFloat.h"
+#include "PositionGrid.h"
 
 #include <osg/Notify>
 
@@ -112,6 +113,8 @@ void GlyphCloud::updateGlyphs(bool report)
     }
     if (scalars)
         packScalars();
+    if (positions)
+        packPositions();
     if (report && (positions || radii || scalars || vectorsChanged))
         reportSkipped();
     updateScalarMapping();
@@ -345,6 +348,28 @@ float GlyphCloud::decodeRadius(unsigned int i) const
     return relative * _radiusScale;
 }
 
+void GlyphCloud::packPositions()
+{
+    const unsigned int count = _compressedPositions && _positions.valid() ? _positions->size() : 0;
+    const detail::PositionGrid grid = count ? detail::PositionGrid::fit(*_positions, count) : detail::PositionGrid();
+    _positionGrid.set(grid.offset.x(), grid.offset.y(), grid.offset.z(), grid.step);
+    _positionGridUniform->set(_positionGrid);
+    _quantisedPositions->resize(count);
+    for (unsigned int i = 0; i < count; ++i)
+        (*_quantisedPositions)[i] = grid.quantise((*_positions)[i]);
+    _quantisedPositions->dirty();
+}
+
+osg::Vec3 GlyphCloud::drawnPosition(unsigned int i) const
+{
+    if (!_compressedPositions)
+        return (*_positions)[i];
+    detail::PositionGrid grid;
+    grid.offset.set(_positionGrid.x(), _positionGrid.y(), _positionGrid.z());
+    grid.step = _positionGrid.w();
+    return grid.decode((*_quantisedPositions)[i]);
+}
+
 osg::BoundingBox GlyphCloud::computeGlyphBox(unsigned int i) const
 {
     osg::BoundingBox box;
@@ -354,7 +379,7 @@ osg::BoundingBox GlyphCloud::computeGlyphBox(unsigned int i) const
     const float widest = _shape == GlyphShape::Arrow ? std::max(_arrowParams.y(), 1.0f) : 1.0f;
     const float radius = decoded * widest;
     const osg::Vec3 pad(radius, radius, radius);
-    const osg::Vec3& p = (*_positions)[i];
+    const osg::Vec3 p = drawnPosition(i);
     if (!hasVectorShape())
     {
         box.expandBy(p - pad);

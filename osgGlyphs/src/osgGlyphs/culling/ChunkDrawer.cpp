@@ -125,7 +125,9 @@ public:
 
     unsigned int drawChunks(const std::vector<unsigned int>& chunkIndices)
     {
-        const char* base = bind(*_chunks.order);
+        osg::DrawElements& order = *_chunks.order; // getDataType() is not const in OSG 3.6
+        const char* base = bind(order);
+        const size_t indexSize = order.getDataType() == GL_UNSIGNED_SHORT ? sizeof(GLushort) : sizeof(GLuint);
         _counts.clear();
         _offsets.clear();
         unsigned int glyphs = 0;
@@ -133,23 +135,23 @@ public:
         {
             const GlyphChunk& chunk = _chunks.chunks[index];
             _counts.push_back(GLsizei(chunk.count));
-            _offsets.push_back(base + size_t(chunk.first) * sizeof(GLuint));
+            _offsets.push_back(base + size_t(chunk.first) * indexSize);
             glyphs += chunk.count;
         }
         if (!_counts.empty())
-            _state.get<osg::GLExtensions>()->glMultiDrawElements(GL_POINTS, _counts.data(), GL_UNSIGNED_INT,
+            _state.get<osg::GLExtensions>()->glMultiDrawElements(GL_POINTS, _counts.data(), order.getDataType(),
                                                                  _offsets.data(), GLsizei(_counts.size()));
         return glyphs;
     }
 
 private:
     /** Binds the indices' element buffer; the address of the first index to draw from. */
-    const char* bind(const osg::DrawElementsUInt& indices)
+    const char* bind(const osg::DrawElements& indices)
     {
         osg::GLBufferObject* ebo =
             _usingVertexBufferObjects ? indices.getOrCreateGLBufferObject(_state.getContextID()) : nullptr;
         if (!ebo)
-            return reinterpret_cast<const char*>(indices.empty() ? nullptr : &indices.front());
+            return static_cast<const char*>(indices.getDataPointer());
         _state.getCurrentVertexArrayState()->bindElementBufferObject(ebo);
         return reinterpret_cast<const char*>(ebo->getOffset(indices.getBufferIndex()));
     }

@@ -116,12 +116,15 @@ GlyphChunks osgGlyphs::detail::buildGlyphChunks(unsigned int numGlyphs,
     Splitter{keys, std::max(1u, maxChunkSize), result.chunks}.split(0, keys.size(), 0);
     const uint32_t NO_CHUNK = 0xffffffffu;
     std::vector<uint32_t> chunkOf(numGlyphs, NO_CHUNK);
-    result.order = new osg::DrawElementsUInt(GL_POINTS, keys.size());
+    if (numGlyphs <= 65536u)
+        result.order = new osg::DrawElementsUShort(GL_POINTS, keys.size());
+    else
+        result.order = new osg::DrawElementsUInt(GL_POINTS, keys.size());
     for (uint32_t c = 0; c < result.chunks.size(); ++c)
         for (size_t k = result.chunks[c].first; k < result.chunks[c].first + result.chunks[c].count; ++k)
         {
             const uint32_t id = uint32_t(keys[k] & 0xffffffffu);
-            (*result.order)[k] = id;
+            result.order->setElement(static_cast<unsigned int>(k), id);
             chunkOf[id] = c;
         }
     keys = std::vector<uint64_t>();

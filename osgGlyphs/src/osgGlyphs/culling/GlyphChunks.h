@@ -22,11 +22,12 @@ struct GlyphChunk
     unsigned int count = 0;
 };
 
-/** The glyphs that are drawn, in Morton order as GL_POINTS indices (the caller's glyph ids),
- * cut along the octree of that order into chunks of at most maxChunkSize glyphs. */
+/** The glyphs that are drawn, in Morton order as GL_POINTS indices (the caller's glyph ids; 16-bit
+ * for up to 65,536 glyphs), cut along the octree of that order into chunks of at most
+ * maxChunkSize glyphs. */
 struct GlyphChunks
 {
-    osg::ref_ptr<osg::DrawElementsUInt> order;
+    osg::ref_ptr<osg::DrawElements> order;
     std::vector<GlyphChunk> chunks;
 };
 

@@ -17,6 +17,8 @@ namespace detail
 extern const char* const FLOAT_ATTRIBUTES_DEFINE;
 extern const char* const COLOR_RGBA_DEFINE;
 extern const char* const VECTOR_SHAPE_DEFINE;
+/** Set by a cloud (not a variant) whose positions are 16-bit integers on a grid. */
+extern const char* const COMPRESSED_POSITIONS_DEFINE;
 
 /** The defines of a variant, as its StateSet sets them. */
 std::vector<std::string> getVariantDefines(const GlyphVariant& variant);

@@ -1,9 +1,12 @@
 #include <osgGlyphs/GlyphCloud>
 
+#include <osg/ValueObject>
 #include <osgDB/InputStream>
 #include <osgDB/ObjectWrapper>
 #include <osgDB/OutputStream>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 using osgGlyphs::GlyphCloud;
@@ -66,6 +69,68 @@ static bool readAnchor(osgDB::InputStream& is, GlyphCloud& cloud)
 static bool writeAnchor(osgDB::OutputStream& os, const GlyphCloud& cloud)
 {
     os << std::string(osgGlyphs::getAnchorName(cloud.getAnchor())) << std::endl;
+    return true;
+}
+
+// Positions keep the format of an object serializer (a flag, then the array; in text files within
+// brackets), so files written before compressed positions read as before. A cloud with compressed
+// positions writes their 16-bit integers instead, with their grid as the array's user value.
+
+static const char* const POSITION_GRID_USER_VALUE = "osgGlyphs_positionGrid";
+
+static osg::ref_ptr<const osg::Array> positionsToWrite(const GlyphCloud& cloud)
+{
+    const osg::Vec3Array& positions = *cloud.getPositions();
+    const auto* quantised = dynamic_cast<const osg::Vec3sArray*>(cloud.getGlyphArrays().positions);
+    // Non-finite positions (glyphs that are skipped) have no 16-bit value: write the floats.
+    if (!cloud.getCompressedPositions() || !quantised ||
+        !std::all_of(positions.begin(), positions.end(), [](const osg::Vec3& p) { return std::isfinite(p.length2()); }))
+        return &positions;
+    osg::ref_ptr<osg::Vec3sArray> withGrid = new osg::Vec3sArray(quantised->begin(), quantised->end());
+    withGrid->setUserValue(POSITION_GRID_USER_VALUE, cloud.getPositionGrid());
+    return withGrid;
+}
+
+static bool checkPositions(const GlyphCloud& cloud)
+{
+    return cloud.getPositions() != nullptr;
+}
+
+static bool readPositions(osgDB::InputStream& is, GlyphCloud& cloud)
+{
+    if (!is.isBinary())
+    {
+        bool hasObject = false;
+        is >> hasObject;
+        if (!hasObject)
+            return true;
+        is >> is.BEGIN_BRACKET;
+    }
+    osg::ref_ptr<osg::Object> array = is.readObject();
+    osg::Vec4 grid;
+    if (osg::Vec3sArray* quantised = dynamic_cast<osg::Vec3sArray*>(array.get()))
+    {
+        if (quantised->getUserValue(POSITION_GRID_USER_VALUE, grid))
+            cloud.setCompressedPositions(*quantised, grid);
+        else
+            is.throwException("osgGlyphs::GlyphCloud: 16-bit positions without their grid");
+    }
+    else if (osg::Vec3Array* positions = dynamic_cast<osg::Vec3Array*>(array.get()))
+        cloud.setPositions(positions);
+    else
+        is.throwException("osgGlyphs::GlyphCloud: the positions are neither floats nor 16-bit integers");
+    if (!is.isBinary())
+        is >> is.END_BRACKET;
+    return true;
+}
+
+static bool writePositions(osgDB::OutputStream& os, const GlyphCloud& cloud)
+{
+    if (!os.isBinary())
+        os << true << os.BEGIN_BRACKET << std::endl;
+    os.writeObject(positionsToWrite(cloud).get());
+    if (!os.isBinary())
+        os << os.END_BRACKET << std::endl;
     return true;
 }
 
@@ -161,7 +226,7 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
     // The single colour comes before the arrays: setting it later would drop per-glyph colours.
     ADD_VEC4_SERIALIZER(Color, osg::Vec4(0.8f, 0.8f, 0.8f, 1.0f));
     ADD_OBJECT_SERIALIZER(Technique, osgGlyphs::GlyphTechnique, NULL);
-    ADD_OBJECT_SERIALIZER(Positions, osg::Vec3Array, NULL);
+    ADD_USER_SERIALIZER(Positions);
     ADD_FLOAT_SERIALIZER(Radius, 1.0f);
     ADD_OBJECT_SERIALIZER(Radii, osg::FloatArray, NULL);
     ADD_OBJECT_SERIALIZER(Colors, osg::Vec4ubArray, NULL);
@@ -182,4 +247,5 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
     ADD_UINT_SERIALIZER(CullingChunkSize, 512u);
     ADD_OBJECT_SERIALIZER(Occlusion, osg::Vec4ubArray, NULL);
     ADD_FLOAT_SERIALIZER(Opacity, 1.0f);
+    ADD_BOOL_SERIALIZER(CompressedPositions, false);
 }
