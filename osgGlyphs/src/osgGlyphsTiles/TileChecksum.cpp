@@ -32,7 +32,11 @@ public:
         add(&radius, sizeof(radius));
         const osg::Vec4 color = cloud->getColor();
         add(&color, sizeof(color));
-        for (const osg::Array* array : {static_cast<const osg::Array*>(cloud->getPositions()),
+        // The positions as drawn: compressed positions are stored, and read back, as grid points.
+        osg::ref_ptr<const osg::Vec3Array> positions = cloud->getPositions();
+        if (cloud->getCompressedPositions())
+            positions = cloud->computeDrawnPositions();
+        for (const osg::Array* array : {static_cast<const osg::Array*>(positions.get()),
                                         static_cast<const osg::Array*>(cloud->getRadii()),
                                         static_cast<const osg::Array*>(cloud->getScalars()),
                                         static_cast<const osg::Array*>(cloud->getColors()),

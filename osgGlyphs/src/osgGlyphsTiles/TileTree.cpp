@@ -152,6 +152,7 @@ osg::ref_ptr<GlyphCloud> TileWriter::createCloud(const TileGlyphs& glyphs) const
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud(_style, osg::CopyOp::SHALLOW_COPY);
     cloud->setOrigin(_origin);
     cloud->setStateSet(_tileStateSet.get());
+    cloud->setCompressedPositions(_options.compressedPositions);
     // The positions last: the cloud is consistent after each call.
     cloud->setPositions(new osg::Vec3Array);
     if (std::all_of(radii.begin(), radii.end(), [&](float r) { return r == radii.front(); }))

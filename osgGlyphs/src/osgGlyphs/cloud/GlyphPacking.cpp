@@ -5,6 +5,7 @@
 #include "PositionGrid.h"
 
 #include <osg/Notify>
+#include <osg/ValueObject>
 
 #include <algorithm>
 #include <cmath>
@@ -354,6 +355,8 @@ void GlyphCloud::packPositions()
     const detail::PositionGrid grid = count ? detail::PositionGrid::fit(*_positions, count) : detail::PositionGrid();
     _positionGrid.set(grid.offset.x(), grid.offset.y(), grid.offset.z(), grid.step);
     _positionGridUniform->set(_positionGrid);
+    if (_compressedPositions)
+        _quantisedPositions->setUserValue(POSITION_GRID_USER_VALUE, _positionGrid);
     _quantisedPositions->resize(count);
     for (unsigned int i = 0; i < count; ++i)
         (*_quantisedPositions)[i] = grid.quantise((*_positions)[i]);

@@ -74,11 +74,11 @@ static bool writeAnchor(osgDB::OutputStream& os, const GlyphCloud& cloud)
 
 // Positions keep the format of an object serializer (a flag, then the array; in text files within
 // brackets), so files written before compressed positions read as before. A cloud with compressed
-// positions writes their 16-bit integers instead, with their grid as the array's user value.
+// positions writes their 16-bit integers instead, with their grid as the array's user value (GlyphCloud::POSITION_GRID_USER_VALUE).
 
-static const char* const POSITION_GRID_USER_VALUE = "osgGlyphs_positionGrid";
-
-static osg::ref_ptr<const osg::Array> positionsToWrite(const GlyphCloud& cloud)
+// Written as the cloud holds them: a temporary array could share the address of one written
+// before it in the same file, which the stream would then refer to instead.
+static const osg::Array* positionsToWrite(const GlyphCloud& cloud)
 {
     const osg::Vec3Array& positions = *cloud.getPositions();
     const auto* quantised = dynamic_cast<const osg::Vec3sArray*>(cloud.getGlyphArrays().positions);
@@ -86,9 +86,7 @@ static osg::ref_ptr<const osg::Array> positionsToWrite(const GlyphCloud& cloud)
     if (!cloud.getCompressedPositions() || !quantised ||
         !std::all_of(positions.begin(), positions.end(), [](const osg::Vec3& p) { return std::isfinite(p.length2()); }))
         return &positions;
-    osg::ref_ptr<osg::Vec3sArray> withGrid = new osg::Vec3sArray(quantised->begin(), quantised->end());
-    withGrid->setUserValue(POSITION_GRID_USER_VALUE, cloud.getPositionGrid());
-    return withGrid;
+    return quantised;
 }
 
 static bool checkPositions(const GlyphCloud& cloud)
@@ -110,7 +108,7 @@ static bool readPositions(osgDB::InputStream& is, GlyphCloud& cloud)
     osg::Vec4 grid;
     if (osg::Vec3sArray* quantised = dynamic_cast<osg::Vec3sArray*>(array.get()))
     {
-        if (quantised->getUserValue(POSITION_GRID_USER_VALUE, grid))
+        if (quantised->getUserValue(GlyphCloud::POSITION_GRID_USER_VALUE, grid))
             cloud.setCompressedPositions(*quantised, grid);
         else
             is.throwException("osgGlyphs::GlyphCloud: 16-bit positions without their grid");
@@ -128,7 +126,7 @@ static bool writePositions(osgDB::OutputStream& os, const GlyphCloud& cloud)
 {
     if (!os.isBinary())
         os << true << os.BEGIN_BRACKET << std::endl;
-    os.writeObject(positionsToWrite(cloud).get());
+    os.writeObject(positionsToWrite(cloud));
     if (!os.isBinary())
         os << os.END_BRACKET << std::endl;
     return true;
