@@ -279,5 +279,39 @@ TEST_P(NativeFormats, CompressedPositionsRoundTripAsTheirGridPoints)
         EXPECT_LE(bytes[true] + 2000 * 6, bytes[false] + 256) << "6 bytes less per glyph, and the grid";
 }
 
+// Scalars that are the values of their 16-bit steps (as tiles store them) are written as the steps,
+// 2 bytes a glyph instead of 4, and read back bit for bit; others stay floats.
+TEST_P(NativeFormats, ScalarsOnTheirStepsRoundTripIn16Bits)
+{
+    const osg::Vec2 range(-3.0f, 5.0f);
+    osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray, steps = new osg::FloatArray;
+    osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
+    for (int i = 0; i < 3000; ++i)
+    {
+        const float s = -3.0f + 8.0f * std::fmod(0.618034f * i, 1.0f);
+        scalars->push_back(s);
+        steps->push_back(GlyphCloud::dequantiseScalar(GlyphCloud::quantiseScalar(s, range), range));
+        positions->push_back(osg::Vec3(float(i % 50), float(i / 50), 0.0f));
+    }
+    std::map<bool, std::uintmax_t> bytes;
+    for (bool onSteps : {false, true})
+    {
+        osg::ref_ptr<GlyphCloud> original = new GlyphCloud;
+        original->setScalarRange(range.x(), range.y());
+        original->setScalars(onSteps ? steps.get() : scalars.get());
+        original->setPositions(positions.get());
+        const std::string path = outputPath(std::string("scalars_") + (onSteps ? "16" : "32") + "." + GetParam());
+        ASSERT_TRUE(osgDB::writeObjectFile(*original, path)) << path;
+        bytes[onSteps] = std::filesystem::file_size(path);
+        osg::ref_ptr<GlyphCloud> copy = osgDB::readRefFile<GlyphCloud>(path);
+        ASSERT_TRUE(copy.valid()) << path;
+        EXPECT_TRUE(sameBits(original->getScalars(), copy->getScalars())) << path;
+        EXPECT_EQ(copy->getScalarRangeMin(), range.x());
+        EXPECT_EQ(copy->getColorMode(), osgGlyphs::GlyphColorMode::Scalar);
+    }
+    if (GetParam() == "osgb")
+        EXPECT_LE(bytes[true] + 3000 * 2, bytes[false] + 64) << "2 bytes less per glyph";
+}
+
 INSTANTIATE_TEST_SUITE_P(, NativeFormats, ::testing::Values("osgt", "osgb", "osgx"),
                          [](const ::testing::TestParamInfo<std::string>& param) { return param.param; });

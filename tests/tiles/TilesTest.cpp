@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -190,6 +191,22 @@ TEST_P(PagedTiles, FinestLevelOfCompressedTilesIsTheFlatCloudWithinTheirGrid)
     EXPECT_LE(coverageFlips, covered / 2000);
     EXPECT_LE(colorDiffering, covered / 1000);
     EXPECT_LE(depthDiffering, covered / 1000);
+}
+
+// 16-bit positions, and scalars stored as the 16-bit steps the GPU draws: at most 12 bytes a glyph
+// in the archive, every level and the archive's index included.
+TEST(TileArchives, TakeAtMostTwelveBytesAGlyph)
+{
+    osg::ref_ptr<GlyphCloud> cloud = randomCloud(200000, 0.002f, osgGlyphs::GlyphShape::Sphere);
+    ASSERT_EQ(cloud->getColorMode(), osgGlyphs::GlyphColorMode::Scalar);
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder = new osgGlyphsTiles::TileBuilder(*cloud);
+    std::string error;
+    ASSERT_TRUE(builder->addGlyphs(*cloud, error)) << error;
+    ASSERT_TRUE(builder->write(archivePath("tiles_bytes"), error)) << error;
+    const double bytesPerGlyph = double(std::filesystem::file_size(archivePath("tiles_bytes"))) / 200000.0;
+    std::cout << "tile archive: " << bytesPerGlyph << " bytes per glyph" << std::endl;
+    EXPECT_LE(bytesPerGlyph, 12.0);
+    EXPECT_GE(bytesPerGlyph, 8.0) << "each glyph holds 6 bytes of position and 2 of scalar";
 }
 
 TEST_P(PagedTiles, PagingNeverLeavesHoles)

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cmath>
 #include <cstdio>
 
 using namespace osgGlyphsTiles;
@@ -164,11 +165,19 @@ osg::ref_ptr<GlyphCloud> TileWriter::createCloud(const TileGlyphs& glyphs) const
         cloud->setRadii(new osg::FloatArray(radii.begin(), radii.end()));
     if (_style.getColorMode() == GlyphColorMode::Scalar)
     {
-        cloud->setScalars(new osg::FloatArray(glyphs.scalars.begin(), glyphs.scalars.end()));
         if (_style.getScalarRangeIsAutomatic())
             cloud->setScalarRange(_scalarMin, _scalarMax);
         else
             cloud->setScalarRange(_style.getScalarRangeMin(), _style.getScalarRangeMax());
+        osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray(glyphs.scalars.begin(), glyphs.scalars.end());
+        // Compressed attributes draw each scalar as its 16-bit step: stored as that step's value,
+        // it draws the same and files keep it in 2 bytes.
+        const osg::Vec2 range = cloud->getScalarQuantisationRange();
+        if (_style.getCompressedAttributes() && range.x() < range.y())
+            for (float& s : *scalars)
+                if (std::isfinite(s))
+                    s = GlyphCloud::dequantiseScalar(GlyphCloud::quantiseScalar(s, range), range);
+        cloud->setScalars(scalars.get());
     }
     else if (_style.getColorMode() == GlyphColorMode::RGBA)
         cloud->setColors(new osg::Vec4ubArray(glyphs.colors.begin(), glyphs.colors.end()));

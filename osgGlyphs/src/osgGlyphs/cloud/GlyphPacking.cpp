@@ -280,20 +280,30 @@ void GlyphCloud::packRadii()
     _unpacked->dirty();
 }
 
+uint16_t GlyphCloud::quantiseScalar(float scalar, const osg::Vec2& range)
+{
+    const double span = double(range.y()) - double(range.x());
+    if (!std::isfinite(scalar) || !(span > 0.0) || !std::isfinite(span))
+        return 0;
+    return static_cast<uint16_t>(std::lround(std::clamp((double(scalar) - range.x()) * (65535.0 / span), 0.0, 65535.0)));
+}
+
+float GlyphCloud::dequantiseScalar(uint16_t step, const osg::Vec2& range)
+{
+    return static_cast<float>(double(range.x()) + (double(range.y()) - double(range.x())) * (step / 65535.0));
+}
+
 void GlyphCloud::packScalars()
 {
     // The scalar over the quantisation range: 16 bits in the packed word, or a float in [0, 1]
     // (beyond it where the data is) when uncompressed.
     const double span = double(_quantisedMax) - double(_quantisedMin);
-    const double toSteps = span > 0.0 ? 65535.0 / span : 0.0;
+    const osg::Vec2 range = getScalarQuantisationRange();
     _unpacked->resize(_compressedAttributes ? 0 : _numGlyphs);
     for (unsigned int i = 0; i < _numGlyphs; ++i)
     {
         const float s = _scalars.valid() ? (*_scalars)[i] : 0.0f;
-        uint32_t steps = 0;
-        if (_scalars.valid() && std::isfinite(s))
-            steps = static_cast<uint32_t>(
-                std::lround(std::clamp((double(s) - _quantisedMin) * toSteps, 0.0, 65535.0)));
+        const uint32_t steps = _scalars.valid() ? quantiseScalar(s, range) : 0u;
         uint32_t& word = (*_packed)[i];
         word = (word & 0xffffu) | (steps << 16);
         if (!_compressedAttributes)

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 using osgGlyphs::GlyphCloud;
@@ -132,6 +133,98 @@ static bool writePositions(osgDB::OutputStream& os, const GlyphCloud& cloud)
     return true;
 }
 
+// Scalars that are exactly the values of their 16-bit steps (as tiles store them) are written as the
+// steps (ScalarSteps, 2 bytes a glyph), other scalars as floats (Scalars): never both.
+
+static bool scalarsAreSteps(const GlyphCloud& cloud)
+{
+    const osg::FloatArray* scalars = cloud.getScalars();
+    const osg::Vec2 range = cloud.getScalarQuantisationRange();
+    return scalars && !scalars->empty() &&
+           std::all_of(scalars->begin(), scalars->end(),
+                       [&](float s)
+                       {
+                           const float value = GlyphCloud::dequantiseScalar(GlyphCloud::quantiseScalar(s, range), range);
+                           return std::memcmp(&value, &s, sizeof(s)) == 0;
+                       });
+}
+
+static const osg::FloatArray* getFloatScalars(const GlyphCloud& cloud)
+{
+    return scalarsAreSteps(cloud) ? nullptr : cloud.getScalars();
+}
+
+static bool checkScalars(const GlyphCloud& cloud)
+{
+    return getFloatScalars(cloud) != nullptr;
+}
+
+static bool readScalars(osgDB::InputStream& is, GlyphCloud& cloud)
+{
+    if (!is.isBinary())
+    {
+        bool hasObject = false;
+        is >> hasObject;
+        if (!hasObject)
+            return true;
+        is >> is.BEGIN_BRACKET;
+    }
+    osg::ref_ptr<osg::FloatArray> scalars = is.readObjectOfType<osg::FloatArray>();
+    cloud.setScalars(scalars.get());
+    if (!is.isBinary())
+        is >> is.END_BRACKET;
+    return true;
+}
+
+static bool writeScalars(osgDB::OutputStream& os, const GlyphCloud& cloud)
+{
+    if (!os.isBinary())
+        os << true << os.BEGIN_BRACKET << std::endl;
+    os.writeObject(getFloatScalars(cloud));
+    if (!os.isBinary())
+        os << os.END_BRACKET << std::endl;
+    return true;
+}
+
+static bool checkScalarSteps(const GlyphCloud& cloud)
+{
+    return scalarsAreSteps(cloud);
+}
+
+static bool readScalarSteps(osgDB::InputStream& is, GlyphCloud& cloud)
+{
+    osg::Vec2 range;
+    is >> range;
+    const unsigned int count = is.readSize();
+    is >> is.BEGIN_BRACKET;
+    // No allocation trusts the count: a truncated stream fails before it runs out of memory.
+    osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray;
+    for (unsigned int i = 0; i < count && !is.getException(); ++i)
+    {
+        unsigned short step = 0;
+        is >> step;
+        scalars->push_back(GlyphCloud::dequantiseScalar(step, range));
+    }
+    is >> is.END_BRACKET;
+    if (is.getException())
+        return false;
+    cloud.setScalars(scalars.get());
+    return true;
+}
+
+static bool writeScalarSteps(osgDB::OutputStream& os, const GlyphCloud& cloud)
+{
+    const osg::FloatArray& scalars = *cloud.getScalars();
+    const osg::Vec2 range = cloud.getScalarQuantisationRange();
+    os << range;
+    os.writeSize(static_cast<unsigned int>(scalars.size()));
+    os << os.BEGIN_BRACKET << std::endl;
+    for (float s : scalars)
+        os << static_cast<unsigned short>(GlyphCloud::quantiseScalar(s, range));
+    os << os.END_BRACKET << std::endl;
+    return true;
+}
+
 static bool checkScalarRange(const GlyphCloud& cloud)
 {
     return !cloud.getScalarRangeIsAutomatic();
@@ -228,7 +321,7 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
     ADD_FLOAT_SERIALIZER(Radius, 1.0f);
     ADD_OBJECT_SERIALIZER(Radii, osg::FloatArray, NULL);
     ADD_OBJECT_SERIALIZER(Colors, osg::Vec4ubArray, NULL);
-    ADD_OBJECT_SERIALIZER(Scalars, osg::FloatArray, NULL);
+    ADD_USER_SERIALIZER(Scalars);
     ADD_OBJECT_SERIALIZER(Vectors, osg::Vec3Array, NULL);
     ADD_OBJECT_SERIALIZER(ColorMap, osgGlyphs::ColorMap, NULL);
     ADD_USER_SERIALIZER(ScalarRange);
@@ -246,4 +339,5 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
     ADD_OBJECT_SERIALIZER(Occlusion, osg::Vec4ubArray, NULL);
     ADD_FLOAT_SERIALIZER(Opacity, 1.0f);
     ADD_BOOL_SERIALIZER(CompressedPositions, false);
+    ADD_USER_SERIALIZER(ScalarSteps);
 }
