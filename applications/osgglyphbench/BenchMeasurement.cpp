@@ -35,6 +35,7 @@ osg::ref_ptr<osgGlyphs::GlyphCloud> createCloud(const BenchCase& c, float radius
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(options);
     cloud->setTechnique(osgGlyphs::createTechnique(c.technique).get());
     cloud->setCompressedAttributes(settings.compressedAttributes);
+    cloud->setCompressedPositions(settings.compressedPositions);
     cloud->setUseVertexBufferObjects(settings.dataPath == DataPath::VBO);
     cloud->setUseDisplayList(settings.dataPath == DataPath::DisplayList);
     cloud->setCulling(c.culling);

@@ -187,6 +187,15 @@ bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
         }
         settings.compressedAttributes = text == "compressed";
     }
+    if (arguments.read("--positions", text))
+    {
+        if (text != "float" && text != "16")
+        {
+            arguments.reportError("--positions: unknown value '" + text + "' (float, 16)");
+            return false;
+        }
+        settings.compressedPositions = text == "16";
+    }
     if (arguments.read("--headless", text) &&
         !osgGlyphsHeadless::parseHeadlessBackend(text, settings.backend))
     {
@@ -308,6 +317,9 @@ void describeBenchOptions(osg::ApplicationUsage& usage)
                                "A glyph's radius and scalar as a half float and 16 bits in one word "
                                "(default), or as two floats (paper section 3; GlyphCloud::"
                                "setCompressedAttributes).");
+    usage.addCommandLineOption("--positions <float|16>",
+                               "Positions as floats (default), or as 16-bit integers on a grid over the "
+                               "cloud, as paged tiles draw them (GlyphCloud::setCompressedPositions).");
     usage.addCommandLineOption("--max-ms <ms>", "Skip the larger n of a technique and shape once its median "
                                                 "frame time exceeds ms (default: no limit).");
     usage.addCommandLineOption("--headless <osmesa|egl>",

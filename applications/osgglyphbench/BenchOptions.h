@@ -71,6 +71,7 @@ struct BenchSettings
     std::string plotFile;
     DataPath dataPath = DataPath::VBO;
     bool compressedAttributes = true;
+    bool compressedPositions = false;
     osgGlyphsHeadless::HeadlessBackend backend = osgGlyphsHeadless::HeadlessBackend::Default;
 };
 

@@ -7,7 +7,7 @@
 
 const char* const CSV_HEADER = "technique,shape,n,width,height,frames,ms_median,ms_min,ms_max,first_frame_ms,"
                                "gpu_bytes_per_glyph,data_path,coverage,radius,attributes,culling,overdraw,"
-                               "submitted,ao,ao_seconds,screen_effects,opacity,transparency";
+                               "submitted,ao,ao_seconds,screen_effects,opacity,transparency,positions";
 
 namespace
 {
@@ -98,7 +98,8 @@ void writeCsvRow(std::ostream& csv, const BenchResult& result, const BenchSettin
         << (result.overdraw < 0.0 ? "" : format(result.overdraw, 3)) << ',' << format(result.submitted, 4)
         << ',' << (result.ambientOcclusion ? "on" : "off") << ',' << format(result.occlusionSeconds, 3) << ','
         << getScreenEffectsName(result.screenEffects) << ',' << format(result.opacity, 3) << ','
-        << (result.opacity < 1.0f ? getTransparencyName(result.transparency) : "") << '\n'
+        << (result.opacity < 1.0f ? getTransparencyName(result.transparency) : "") << ','
+        << (settings.compressedPositions ? "16" : "float") << '\n'
         << std::flush;
 }
 
