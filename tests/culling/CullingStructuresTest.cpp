@@ -135,7 +135,8 @@ TEST(GlyphChunks, SmallCloudsOrderTheirGlyphsWith16BitIndices)
             [&](unsigned int i)
             {
                 const osg::Vec3 centre(float(i % 64), float(i / 64 % 64), float(i / 4096));
-                return osg::BoundingBox(centre - osg::Vec3(0.4f, 0.4f, 0.4f), centre + osg::Vec3(0.4f, 0.4f, 0.4f));
+                return osg::BoundingBox(centre - osg::Vec3(0.4f, 0.4f, 0.4f),
+                                        centre + osg::Vec3(0.4f, 0.4f, 0.4f));
             },
             512);
         EXPECT_EQ(chunks.order->getDataType(), GLenum(count <= 65536u ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT));

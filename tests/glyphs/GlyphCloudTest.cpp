@@ -161,7 +161,8 @@ TEST_F(GlyphCloudData, GPUFootprintPerGlyph)
 {
     osg::ref_ptr<GlyphCloud> cloud = createScalarRow({0.0f, 1.0f, 2.0f, 3.0f});
     cloud->setRadii(makeArray<osg::FloatArray>({0.5f, 0.6f, 0.7f, 0.8f}));
-    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 18.0) << "position + radius + scalar + the spatial order's 16-bit index";
+    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 18.0)
+        << "position + radius + scalar + the spatial order's 16-bit index";
     cloud->setCompressedPositions(true);
     EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 12.0) << "16-bit position + radius + scalar + index";
     cloud->setCompressedPositions(false);
@@ -180,8 +181,8 @@ TEST_F(GlyphCloudData, CompressedPositionsAreTheNearestPointsOfTheirGrid)
     osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
     for (int i = 0; i < 5000; ++i)
         positions->push_back(low + osg::Vec3(size.x() * std::fmod(0.618034f * i, 1.0f),
-                                              size.y() * std::fmod(0.414214f * i, 1.0f),
-                                              size.z() * std::fmod(0.732051f * i, 1.0f)));
+                                             size.y() * std::fmod(0.414214f * i, 1.0f),
+                                             size.z() * std::fmod(0.732051f * i, 1.0f)));
     positions->push_back(osg::Vec3(std::nanf(""), 0.0f, 0.0f));
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
     cloud->setPositions(positions.get());

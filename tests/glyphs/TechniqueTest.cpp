@@ -222,7 +222,8 @@ TEST_P(Techniques, CompressedPositionsDrawTheirGridPointsExactly)
         compressed->setCompressedPositions(true);
         floats->setPositions(compressed->computeDrawnPositions().get());
         const Frame expected = renderer.render(group({floats.get()}).get());
-        const Comparison comparison = compare(renderer.render(group({compressed.get()}).get()), expected, 0, 0.0f);
+        const Comparison comparison =
+            compare(renderer.render(group({compressed.get()}).get()), expected, 0, 0.0f);
         EXPECT_GT(comparison.coveredBoth, name == "points-floor" ? 6 : 300) << name;
         EXPECT_EQ(comparison.coveredBoth, comparison.coveredEither) << name;
         EXPECT_EQ(comparison.differingColor, 0) << name;

@@ -251,14 +251,16 @@ TEST_P(NativeFormats, CompressedPositionsRoundTripAsTheirGridPoints)
     for (bool compressed : {false, true})
     {
         original->setCompressedPositions(compressed);
-        const std::string path = outputPath(std::string("positions_") + (compressed ? "16" : "32") + "." + GetParam());
+        const std::string path =
+            outputPath(std::string("positions_") + (compressed ? "16" : "32") + "." + GetParam());
         ASSERT_TRUE(osgDB::writeObjectFile(*original, path)) << path;
         bytes[compressed] = std::filesystem::file_size(path);
         osg::ref_ptr<GlyphCloud> copy = osgDB::readRefFile<GlyphCloud>(path);
         ASSERT_TRUE(copy.valid()) << path;
         EXPECT_EQ(copy->getCompressedPositions(), compressed);
         EXPECT_TRUE(sameBits(original->computeDrawnPositions().get(), copy->getPositions())) << path;
-        EXPECT_TRUE(sameBits(original->computeDrawnPositions().get(), copy->computeDrawnPositions().get())) << path;
+        EXPECT_TRUE(sameBits(original->computeDrawnPositions().get(), copy->computeDrawnPositions().get()))
+            << path;
         Renderer renderer(160, 120);
         const Frame expected = renderer.render(group({original.get()}).get());
         const Frame actual = renderer.render(group({copy.get()}).get());
@@ -300,7 +302,8 @@ TEST_P(NativeFormats, ScalarsOnTheirStepsRoundTripIn16Bits)
         original->setScalarRange(range.x(), range.y());
         original->setScalars(onSteps ? steps.get() : scalars.get());
         original->setPositions(positions.get());
-        const std::string path = outputPath(std::string("scalars_") + (onSteps ? "16" : "32") + "." + GetParam());
+        const std::string path =
+            outputPath(std::string("scalars_") + (onSteps ? "16" : "32") + "." + GetParam());
         ASSERT_TRUE(osgDB::writeObjectFile(*original, path)) << path;
         bytes[onSteps] = std::filesystem::file_size(path);
         osg::ref_ptr<GlyphCloud> copy = osgDB::readRefFile<GlyphCloud>(path);

@@ -186,8 +186,9 @@ TEST_P(PagedTiles, FinestLevelOfCompressedTilesIsTheFlatCloudWithinTheirGrid)
                 depthDiffering += std::abs(double(flat.depthAt(x, y)) - paged.depthAt(x, y)) > 1e-6;
             }
         }
-    std::cout << name << ": " << covered << " covered pixels, " << coverageFlips << " flipped, " << colorDiffering
-              << " of another colour, " << depthDiffering << " of another depth (beyond 1e-6)" << std::endl;
+    std::cout << name << ": " << covered << " covered pixels, " << coverageFlips << " flipped, "
+              << colorDiffering << " of another colour, " << depthDiffering
+              << " of another depth (beyond 1e-6)" << std::endl;
     EXPECT_LE(coverageFlips, covered / 2000);
     EXPECT_LE(colorDiffering, covered / 1000);
     EXPECT_LE(depthDiffering, covered / 1000);

@@ -169,7 +169,8 @@ osg::ref_ptr<GlyphCloud> TileWriter::createCloud(const TileGlyphs& glyphs) const
             cloud->setScalarRange(_scalarMin, _scalarMax);
         else
             cloud->setScalarRange(_style.getScalarRangeMin(), _style.getScalarRangeMax());
-        osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray(glyphs.scalars.begin(), glyphs.scalars.end());
+        osg::ref_ptr<osg::FloatArray> scalars =
+            new osg::FloatArray(glyphs.scalars.begin(), glyphs.scalars.end());
         // Compressed attributes draw each scalar as its 16-bit step: stored as that step's value,
         // it draws the same and files keep it in 2 bytes.
         const osg::Vec2 range = cloud->getScalarQuantisationRange();

@@ -3,8 +3,8 @@
 
 #include "../culling/ChunkDrawer.h"
 #include "../state/ClipPlaneState.h"
-#include "../state/ViewState.h"
 #include "../state/GlyphDefines.h"
+#include "../state/ViewState.h"
 #include "FlattenedTransforms.h"
 #include "PositionGrid.h"
 
@@ -42,11 +42,10 @@ GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
       _radius(other._radius), _color(other._color), _colorMode(other._colorMode), _shape(other._shape),
       _anchor(other._anchor), _lengthScale(other._lengthScale), _uniformLength(other._uniformLength),
       _arrowParams(other._arrowParams), _lit(other._lit), _compressedAttributes(other._compressedAttributes),
-      _compressedPositions(other._compressedPositions),
-      _autoRange(other._autoRange), _rangeMin(other._rangeMin), _rangeMax(other._rangeMax),
-      _material(other._material), _opacity(other._opacity), _culling(other._culling),
-      _cullingChunkSize(other._cullingChunkSize), _selection(other._selection),
-      _selectionColor(other._selectionColor)
+      _compressedPositions(other._compressedPositions), _autoRange(other._autoRange),
+      _rangeMin(other._rangeMin), _rangeMax(other._rangeMax), _material(other._material),
+      _opacity(other._opacity), _culling(other._culling), _cullingChunkSize(other._cullingChunkSize),
+      _selection(other._selection), _selectionColor(other._selectionColor)
 {
     initialize();
 }
@@ -406,7 +405,8 @@ void GlyphCloud::updateStateSet()
 GlyphArrays GlyphCloud::getGlyphArrays() const
 {
     GlyphArrays arrays;
-    arrays.positions = _compressedPositions ? static_cast<osg::Array*>(_quantisedPositions.get()) : _positions.get();
+    arrays.positions =
+        _compressedPositions ? static_cast<osg::Array*>(_quantisedPositions.get()) : _positions.get();
     arrays.radiusScalar = _compressedAttributes ? static_cast<osg::Array*>(_packed.get()) : _unpacked.get();
     arrays.colors = _colorMode == GlyphColorMode::RGBA ? _colors.get() : nullptr;
     arrays.vectors = hasVectorShape() ? _vectors.get() : nullptr;
@@ -423,8 +423,9 @@ void GlyphCloud::buildPrimitives()
     const auto builtFor =
         std::make_tuple(technique, arrays.positions, arrays.radiusScalar, arrays.colors, arrays.vectors,
                         arrays.occlusion, arrays.count, static_cast<const osg::PrimitiveSet*>(arrays.order));
-    for (const auto& [define, on] : {std::make_pair(GLYPH_AMBIENT_OCCLUSION_DEFINE, arrays.occlusion != nullptr),
-                                     std::make_pair(detail::COMPRESSED_POSITIONS_DEFINE, _compressedPositions)})
+    for (const auto& [define, on] :
+         {std::make_pair(GLYPH_AMBIENT_OCCLUSION_DEFINE, arrays.occlusion != nullptr),
+          std::make_pair(detail::COMPRESSED_POSITIONS_DEFINE, _compressedPositions)})
         if (on)
             _cloudStateSet->setDefine(define);
         else

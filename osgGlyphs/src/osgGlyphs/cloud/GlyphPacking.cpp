@@ -285,7 +285,8 @@ uint16_t GlyphCloud::quantiseScalar(float scalar, const osg::Vec2& range)
     const double span = double(range.y()) - double(range.x());
     if (!std::isfinite(scalar) || !(span > 0.0) || !std::isfinite(span))
         return 0;
-    return static_cast<uint16_t>(std::lround(std::clamp((double(scalar) - range.x()) * (65535.0 / span), 0.0, 65535.0)));
+    return static_cast<uint16_t>(
+        std::lround(std::clamp((double(scalar) - range.x()) * (65535.0 / span), 0.0, 65535.0)));
 }
 
 float GlyphCloud::dequantiseScalar(uint16_t step, const osg::Vec2& range)
@@ -362,7 +363,8 @@ float GlyphCloud::decodeRadius(unsigned int i) const
 void GlyphCloud::packPositions()
 {
     const unsigned int count = _compressedPositions && _positions.valid() ? _positions->size() : 0;
-    const detail::PositionGrid grid = count ? detail::PositionGrid::fit(*_positions, count) : detail::PositionGrid();
+    const detail::PositionGrid grid =
+        count ? detail::PositionGrid::fit(*_positions, count) : detail::PositionGrid();
     _positionGrid.set(grid.offset.x(), grid.offset.y(), grid.offset.z(), grid.step);
     _positionGridUniform->set(_positionGrid);
     if (_compressedPositions)

@@ -43,7 +43,8 @@ PositionGrid PositionGrid::fit(const osg::Vec3Array& positions, unsigned int cou
     }
     // Coincident positions: a step of about a float's resolution at their magnitude.
     if (extent == 0.0)
-        extent = std::max(magnitude * std::ldexp(1.0, -23), double(std::numeric_limits<float>::min())) * MAX_STEPS;
+        extent =
+            std::max(magnitude * std::ldexp(1.0, -23), double(std::numeric_limits<float>::min())) * MAX_STEPS;
     int exponent = 0;
     std::frexp(extent / MAX_STEPS, &exponent);
     double step = std::ldexp(1.0, exponent);

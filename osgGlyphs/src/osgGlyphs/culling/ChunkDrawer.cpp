@@ -139,8 +139,8 @@ public:
             glyphs += chunk.count;
         }
         if (!_counts.empty())
-            _state.get<osg::GLExtensions>()->glMultiDrawElements(GL_POINTS, _counts.data(), order.getDataType(),
-                                                                 _offsets.data(), GLsizei(_counts.size()));
+            _state.get<osg::GLExtensions>()->glMultiDrawElements(
+                GL_POINTS, _counts.data(), order.getDataType(), _offsets.data(), GLsizei(_counts.size()));
         return glyphs;
     }
 

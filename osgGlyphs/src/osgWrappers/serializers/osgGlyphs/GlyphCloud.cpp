@@ -75,7 +75,8 @@ static bool writeAnchor(osgDB::OutputStream& os, const GlyphCloud& cloud)
 
 // Positions keep the format of an object serializer (a flag, then the array; in text files within
 // brackets), so files written before compressed positions read as before. A cloud with compressed
-// positions writes their 16-bit integers instead, with their grid as the array's user value (GlyphCloud::POSITION_GRID_USER_VALUE).
+// positions writes their 16-bit integers instead, with their grid as the array's user value
+// (GlyphCloud::POSITION_GRID_USER_VALUE).
 
 // Written as the cloud holds them: a temporary array could share the address of one written
 // before it in the same file, which the stream would then refer to instead.
@@ -85,7 +86,8 @@ static const osg::Array* positionsToWrite(const GlyphCloud& cloud)
     const auto* quantised = dynamic_cast<const osg::Vec3sArray*>(cloud.getGlyphArrays().positions);
     // Non-finite positions (glyphs that are skipped) have no 16-bit value: write the floats.
     if (!cloud.getCompressedPositions() || !quantised ||
-        !std::all_of(positions.begin(), positions.end(), [](const osg::Vec3& p) { return std::isfinite(p.length2()); }))
+        !std::all_of(positions.begin(), positions.end(),
+                     [](const osg::Vec3& p) { return std::isfinite(p.length2()); }))
         return &positions;
     return quantised;
 }
@@ -144,7 +146,8 @@ static bool scalarsAreSteps(const GlyphCloud& cloud)
            std::all_of(scalars->begin(), scalars->end(),
                        [&](float s)
                        {
-                           const float value = GlyphCloud::dequantiseScalar(GlyphCloud::quantiseScalar(s, range), range);
+                           const float value =
+                               GlyphCloud::dequantiseScalar(GlyphCloud::quantiseScalar(s, range), range);
                            return std::memcmp(&value, &s, sizeof(s)) == 0;
                        });
 }
