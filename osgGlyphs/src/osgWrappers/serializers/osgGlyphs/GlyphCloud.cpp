@@ -73,9 +73,9 @@ static bool writeAnchor(osgDB::OutputStream& os, const GlyphCloud& cloud)
     return true;
 }
 
-// Positions keep the format of an object serializer (a flag, then the array; in text files within
-// brackets), so files written before compressed positions read as before. A cloud with compressed
-// positions writes their 16-bit integers instead, with their grid as the array's user value
+// Positions and scalars keep the format of object serializers (a flag, then the array; in text
+// files within brackets), so files written before compressed positions read as before. A cloud with
+// compressed positions writes their 16-bit integers instead, with their grid as the array's user value
 // (GlyphCloud::POSITION_GRID_USER_VALUE).
 
 // Written as the cloud holds them: a temporary array could share the address of one written
@@ -97,17 +97,40 @@ static bool checkPositions(const GlyphCloud& cloud)
     return cloud.getPositions() != nullptr;
 }
 
-static bool readPositions(osgDB::InputStream& is, GlyphCloud& cloud)
+/** Reads a property written by writeObjectProperty; false when the text says there is no object. */
+static bool readObjectProperty(osgDB::InputStream& is, osg::ref_ptr<osg::Object>& object)
 {
     if (!is.isBinary())
     {
         bool hasObject = false;
         is >> hasObject;
         if (!hasObject)
-            return true;
+            return false;
         is >> is.BEGIN_BRACKET;
     }
-    osg::ref_ptr<osg::Object> array = is.readObject();
+    object = is.readObject();
+    if (!is.isBinary())
+        is >> is.END_BRACKET;
+    return true;
+}
+
+/** Writes an object as an object serializer does after its flag (the user serializer writes the
+ * flag in binary files): in text files the flag, then the object within brackets. */
+static bool writeObjectProperty(osgDB::OutputStream& os, const osg::Object* object)
+{
+    if (!os.isBinary())
+        os << true << os.BEGIN_BRACKET << std::endl;
+    os.writeObject(object);
+    if (!os.isBinary())
+        os << os.END_BRACKET << std::endl;
+    return true;
+}
+
+static bool readPositions(osgDB::InputStream& is, GlyphCloud& cloud)
+{
+    osg::ref_ptr<osg::Object> array;
+    if (!readObjectProperty(is, array))
+        return true;
     osg::Vec4 grid;
     if (osg::Vec3sArray* quantised = dynamic_cast<osg::Vec3sArray*>(array.get()))
     {
@@ -120,19 +143,12 @@ static bool readPositions(osgDB::InputStream& is, GlyphCloud& cloud)
         cloud.setPositions(positions);
     else
         is.throwException("osgGlyphs::GlyphCloud: the positions are neither floats nor 16-bit integers");
-    if (!is.isBinary())
-        is >> is.END_BRACKET;
     return true;
 }
 
 static bool writePositions(osgDB::OutputStream& os, const GlyphCloud& cloud)
 {
-    if (!os.isBinary())
-        os << true << os.BEGIN_BRACKET << std::endl;
-    os.writeObject(positionsToWrite(cloud));
-    if (!os.isBinary())
-        os << os.END_BRACKET << std::endl;
-    return true;
+    return writeObjectProperty(os, positionsToWrite(cloud));
 }
 
 // Scalars that are exactly the values of their 16-bit steps (as tiles store them) are written as the
@@ -164,29 +180,15 @@ static bool checkScalars(const GlyphCloud& cloud)
 
 static bool readScalars(osgDB::InputStream& is, GlyphCloud& cloud)
 {
-    if (!is.isBinary())
-    {
-        bool hasObject = false;
-        is >> hasObject;
-        if (!hasObject)
-            return true;
-        is >> is.BEGIN_BRACKET;
-    }
-    osg::ref_ptr<osg::FloatArray> scalars = is.readObjectOfType<osg::FloatArray>();
-    cloud.setScalars(scalars.get());
-    if (!is.isBinary())
-        is >> is.END_BRACKET;
+    osg::ref_ptr<osg::Object> scalars;
+    if (readObjectProperty(is, scalars))
+        cloud.setScalars(dynamic_cast<osg::FloatArray*>(scalars.get()));
     return true;
 }
 
 static bool writeScalars(osgDB::OutputStream& os, const GlyphCloud& cloud)
 {
-    if (!os.isBinary())
-        os << true << os.BEGIN_BRACKET << std::endl;
-    os.writeObject(getFloatScalars(cloud));
-    if (!os.isBinary())
-        os << os.END_BRACKET << std::endl;
-    return true;
+    return writeObjectProperty(os, getFloatScalars(cloud));
 }
 
 static bool checkScalarSteps(const GlyphCloud& cloud)
