@@ -235,6 +235,21 @@ TEST_P(NativeFormats, ScreenEffectsAndDepthPeelingRoundTrip)
     EXPECT_GT(changed, 200);
 }
 
+namespace
+{
+
+/** Writes the cloud into path and reads it back; bytes: the file's size. Null when either fails. */
+osg::ref_ptr<GlyphCloud> writeAndReadBack(const GlyphCloud& cloud, const std::string& path,
+                                          std::uintmax_t& bytes)
+{
+    if (!osgDB::writeObjectFile(cloud, path))
+        return nullptr;
+    bytes = std::filesystem::file_size(path);
+    return osgDB::readRefFile<GlyphCloud>(path);
+}
+
+}
+
 // Compressed positions are written as their 16-bit integers and grid (6 bytes a glyph instead of 12)
 // and read back as the grid points the GPU drew, which draw the same picture.
 TEST_P(NativeFormats, CompressedPositionsRoundTripAsTheirGridPoints)
@@ -253,9 +268,7 @@ TEST_P(NativeFormats, CompressedPositionsRoundTripAsTheirGridPoints)
         original->setCompressedPositions(compressed);
         const std::string path =
             outputPath(std::string("positions_") + (compressed ? "16" : "32") + "." + GetParam());
-        ASSERT_TRUE(osgDB::writeObjectFile(*original, path)) << path;
-        bytes[compressed] = std::filesystem::file_size(path);
-        osg::ref_ptr<GlyphCloud> copy = osgDB::readRefFile<GlyphCloud>(path);
+        osg::ref_ptr<GlyphCloud> copy = writeAndReadBack(*original, path, bytes[compressed]);
         ASSERT_TRUE(copy.valid()) << path;
         EXPECT_EQ(copy->getCompressedPositions(), compressed);
         EXPECT_TRUE(sameBits(original->computeDrawnPositions().get(), copy->getPositions())) << path;
@@ -304,9 +317,7 @@ TEST_P(NativeFormats, ScalarsOnTheirStepsRoundTripIn16Bits)
         original->setPositions(positions.get());
         const std::string path =
             outputPath(std::string("scalars_") + (onSteps ? "16" : "32") + "." + GetParam());
-        ASSERT_TRUE(osgDB::writeObjectFile(*original, path)) << path;
-        bytes[onSteps] = std::filesystem::file_size(path);
-        osg::ref_ptr<GlyphCloud> copy = osgDB::readRefFile<GlyphCloud>(path);
+        osg::ref_ptr<GlyphCloud> copy = writeAndReadBack(*original, path, bytes[onSteps]);
         ASSERT_TRUE(copy.valid()) << path;
         EXPECT_TRUE(sameBits(original->getScalars(), copy->getScalars())) << path;
         EXPECT_EQ(copy->getScalarRangeMin(), range.x());

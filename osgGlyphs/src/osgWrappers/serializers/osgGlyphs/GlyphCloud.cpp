@@ -168,14 +168,9 @@ static bool scalarsAreSteps(const GlyphCloud& cloud)
                        });
 }
 
-static const osg::FloatArray* getFloatScalars(const GlyphCloud& cloud)
-{
-    return scalarsAreSteps(cloud) ? nullptr : cloud.getScalars();
-}
-
 static bool checkScalars(const GlyphCloud& cloud)
 {
-    return getFloatScalars(cloud) != nullptr;
+    return cloud.getScalars() && !scalarsAreSteps(cloud);
 }
 
 static bool readScalars(osgDB::InputStream& is, GlyphCloud& cloud)
@@ -188,7 +183,7 @@ static bool readScalars(osgDB::InputStream& is, GlyphCloud& cloud)
 
 static bool writeScalars(osgDB::OutputStream& os, const GlyphCloud& cloud)
 {
-    return writeObjectProperty(os, getFloatScalars(cloud));
+    return writeObjectProperty(os, cloud.getScalars()); // checkScalars() chose the floats
 }
 
 static bool checkScalarSteps(const GlyphCloud& cloud)
