@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <iostream>
 
 namespace
@@ -81,6 +82,7 @@ void describeOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--float-positions", "Store positions as floats (12 bytes a glyph), exactly "
                                                     "as given, instead of 16-bit integers on a grid over "
                                                     "each tile (6 bytes, within 1/131,064 of the tile).");
+    usage.addCommandLineOption("--threads <n>", "Threads cutting tiles (default: one per core).");
     usage.addCommandLineOption("-h or --help", "Display this help.");
 }
 
@@ -104,7 +106,16 @@ bool readOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::s
     }
     options.randomCount = static_cast<unsigned long long>(count);
     arguments.read("--seed", options.seed);
-    int tileGlyphs = 0, tileCells = 0;
+    int tileGlyphs = 0, tileCells = 0, threads = 0;
+    if (arguments.read("--threads", threads))
+    {
+        if (threads < 1 || threads > 1024)
+        {
+            error = "--threads needs a number from 1 to 1024";
+            return false;
+        }
+        options.tiles.threads = static_cast<unsigned int>(threads);
+    }
     if (arguments.read("--tile-glyphs", tileGlyphs))
     {
         if (tileGlyphs < 1)
@@ -183,24 +194,34 @@ osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildRandom(const ConvertOptions& opti
                         ? options.mapping.radius
                         : osgGlyphsData::getDefaultRandomRadius(static_cast<unsigned int>(
                               std::min<unsigned long long>(options.randomCount, 0xffffffffu)));
-    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder;
-    progress.start("generating " + std::to_string(options.randomCount) + " random glyphs");
-    for (unsigned long long first = 0; first < options.randomCount; first += RANDOM_BATCH)
+    const auto createBatch = [&options, random](unsigned long long first)
     {
-        random.count = static_cast<unsigned int>(
+        osgGlyphsData::RandomCloudOptions batch = random;
+        batch.count = static_cast<unsigned int>(
             std::min<unsigned long long>(RANDOM_BATCH, options.randomCount - first));
         // One seed per batch: the first batch is osgglyphviewer's --random of the same seed.
-        random.seed = options.seed + static_cast<unsigned int>(first / RANDOM_BATCH) * 7919u;
-        osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(random);
+        batch.seed = options.seed + static_cast<unsigned int>(first / RANDOM_BATCH) * 7919u;
+        osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(batch);
         osgGlyphsData::applyGlyphStyle(*cloud, options.mapping);
-        if (!builder)
-        {
-            builder = new osgGlyphsTiles::TileBuilder(*cloud, options.tiles);
-            builder->setColorTitle("random value");
-        }
+        return cloud;
+    };
+    progress.start("generating " + std::to_string(options.randomCount) + " random glyphs");
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = createBatch(0);
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder =
+        new osgGlyphsTiles::TileBuilder(*cloud, options.tiles);
+    builder->setColorTitle("random value");
+    for (unsigned long long first = 0; first < options.randomCount; first += RANDOM_BATCH)
+    {
+        // The next batch is made while this one is added.
+        const unsigned long long next = first + RANDOM_BATCH;
+        std::future<osg::ref_ptr<osgGlyphs::GlyphCloud>> nextCloud;
+        if (next < options.randomCount)
+            nextCloud = std::async(std::launch::async, createBatch, next);
         if (!builder->addGlyphs(*cloud, error))
             return nullptr;
-        progress.update(double(first + random.count) / options.randomCount);
+        progress.update(double(first + cloud->getNumGlyphs()) / options.randomCount);
+        if (nextCloud.valid())
+            cloud = nextCloud.get();
     }
     return builder;
 }

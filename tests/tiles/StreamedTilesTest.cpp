@@ -76,6 +76,7 @@ std::string writeArchive(const Dataset& dataset, std::size_t maxInMemory, const 
     options.cellsPerAxis = 8;
     options.maxGlyphsInMemory = maxInMemory;
     options.temporaryDirectory = folder.string();
+    options.threads = 1; // the files' order in the archive too (tests/threads/TileThreadsTest.cpp)
     osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder =
         new osgGlyphsTiles::TileBuilder(*randomBatch(dataset.shape, dataset.rgba, 1), options);
     std::string error;

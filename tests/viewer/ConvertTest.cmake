@@ -26,6 +26,7 @@ expect_failure(osgglyphconvert 2 "unknown option --bogus" "${CONVERT}" --bogus "
 expect_failure(osgglyphconvert 2 "needs an input file and an output file" "${CONVERT}" out.osga)
 expect_failure(osgglyphconvert 2 "out.ive: the output is an OSG archive" "${CONVERT}" --random 10 out.ive)
 expect_failure(osgglyphconvert 2 "--tile-cells needs a power of two" "${CONVERT}" --tile-cells 3 --random 10 out.osga)
+expect_failure(osgglyphconvert 2 "--threads needs a number from 1" "${CONVERT}" --threads 0 --random 10 out.osga)
 expect_failure(osgglyphconvert 1 ".*missing.xyz" "${CONVERT}" missing.xyz out.osga)
 expect_failure(osgglyphconvert 1 ".*malformed.lammpstrj:12:.*" "${CONVERT}" "${DATA_DIR}/malformed.lammpstrj" out.osga)
 
@@ -44,15 +45,17 @@ if(NOT result EQUAL 0)
 endif()
 
 # Files larger than the glyphs held in memory are read in parts, over passes until the mapping
-# settles, and cut into tiles through temporary files: the archive is the one read whole.
+# settles, and cut into tiles through temporary files: the archive is the one read whole (on one
+# thread, which keeps the order of the files in the archive too).
 foreach(sample "melt4k.lammpstrj" "galaxy.vtk;--glyph;arrow" "water64.xyz" "torus.ply" "probes.csv;--color-by;density")
     list(POP_FRONT sample file)
     set(options ${sample})
-    run("${CONVERT}" "${SAMPLES_DIR}/${file}" ${options} --tile-glyphs 50 --tile-cells 4 whole.osga)
+    run("${CONVERT}" "${SAMPLES_DIR}/${file}" ${options} --tile-glyphs 50 --tile-cells 4 --threads 1 whole.osga)
     if(NOT result EQUAL 0)
         message(FATAL_ERROR "the conversion of ${file} failed")
     endif()
-    run("${CONVERT}" "${SAMPLES_DIR}/${file}" ${options} --tile-glyphs 50 --tile-cells 4 --memory-glyphs 500 parts.osga)
+    run("${CONVERT}" "${SAMPLES_DIR}/${file}" ${options} --tile-glyphs 50 --tile-cells 4 --memory-glyphs 500 --threads 1
+        parts.osga)
     if(NOT result EQUAL 0 OR NOT err MATCHES "read [^\n]*${file} in [0-9]+ parts, [0-9]+ pass")
         message(FATAL_ERROR "${file} was not read in parts")
     endif()

@@ -22,19 +22,22 @@ uint64_t spread(uint64_t v)
     return v;
 }
 
-uint64_t quantise(double value, double min, double size)
+const double MORTON_STEPS = double(1u << MORTON_LEVELS);
+
+uint64_t quantise(double value, double min, double stepsPerUnit)
 {
-    const double steps = double(1u << MORTON_LEVELS);
-    const double q = std::floor((value - min) / size * steps);
-    return static_cast<uint64_t>(std::clamp(q, 0.0, steps - 1.0));
+    const double q = std::floor((value - min) * stepsPerUnit);
+    return static_cast<uint64_t>(std::clamp(q, 0.0, MORTON_STEPS - 1.0));
 }
 
 }
 
 uint64_t OctreeCube::code(const osg::Vec3d& point) const
 {
-    return spread(quantise(point.x(), min.x(), size)) | spread(quantise(point.y(), min.y(), size)) << 1 |
-           spread(quantise(point.z(), min.z(), size)) << 2;
+    const double stepsPerUnit = MORTON_STEPS / size;
+    return spread(quantise(point.x(), min.x(), stepsPerUnit)) |
+           spread(quantise(point.y(), min.y(), stepsPerUnit)) << 1 |
+           spread(quantise(point.z(), min.z(), stepsPerUnit)) << 2;
 }
 
 OctreeCube OctreeCube::node(unsigned int level, uint64_t prefix) const

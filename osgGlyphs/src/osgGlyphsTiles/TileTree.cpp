@@ -39,6 +39,9 @@ double glyphsDrawnBy(osg::Node& node)
     return cloud ? cloud->getNumGlyphs() : 0.0;
 }
 
+/** Subtrees of more tiles than this are cut on threads of their own. */
+const std::size_t PARALLEL_TILES = 2;
+
 unsigned int log2Of(unsigned int powerOfTwo)
 {
     unsigned int bits = 0;
@@ -86,7 +89,7 @@ TileWriter::TileWriter(const GlyphCloud& style, const TileOptions& options, cons
       _origin(dataset.origin), _scalarMin(dataset.scalarMin), _scalarMax(dataset.scalarMax),
       _tileStateSet(style.getStateSet() ? new osg::StateSet(*style.getStateSet(), osg::CopyOp::SHALLOW_COPY)
                                         : new osg::StateSet),
-      _archive(archive), _total(totalGlyphs), _progress(progress)
+      _archive(archive), _total(totalGlyphs), _progress(progress), _threads(options.threads)
 {
     // Nearest first: each tile's culling then skips what nearer tiles hide. A copy of the style's
     // state: the caller's cloud keeps its own bin.
@@ -95,6 +98,7 @@ TileWriter::TileWriter(const GlyphCloud& style, const TileOptions& options, cons
 
 void TileWriter::addDone(std::size_t glyphs)
 {
+    std::lock_guard<std::mutex> lock(_progressMutex);
     _done += glyphs;
     if (_progress && _total)
         _progress(_leavesStart + (1.0 - _leavesStart) * double(_done) / _total);
@@ -102,9 +106,24 @@ void TileWriter::addDone(std::size_t glyphs)
 
 void TileWriter::setProgress(double fraction)
 {
+    std::lock_guard<std::mutex> lock(_progressMutex);
     _leavesStart = fraction;
     if (_progress)
         _progress(fraction);
+}
+
+void TileWriter::fail(const std::string& error)
+{
+    std::lock_guard<std::mutex> lock(_progressMutex);
+    if (!_failed)
+        _error = error;
+    _failed = true;
+}
+
+std::string TileWriter::getError() const
+{
+    std::lock_guard<std::mutex> lock(_progressMutex);
+    return _error;
 }
 
 osg::ref_ptr<osg::Node> TileWriter::createInnerNode(unsigned int level, uint64_t prefix, osg::Group& children,
@@ -135,11 +154,15 @@ osg::ref_ptr<osg::Node> TileWriter::createInnerNode(unsigned int level, uint64_t
     }
     const std::string file = childrenFileName(level, prefix);
     setTileChecksum(children);
-    const osgDB::ReaderWriter::WriteResult written = _archive->writeNode(children, file);
+    osgDB::ReaderWriter::WriteResult written;
+    {
+        std::lock_guard<std::mutex> lock(_archiveMutex);
+        written = _archive->writeNode(children, file);
+    }
     if (!written.success())
     {
-        _error = "cannot write " + file + " into the archive" +
-                 (written.message().empty() ? std::string() : ": " + written.message());
+        fail("cannot write " + file + " into the archive" +
+             (written.message().empty() ? std::string() : ": " + written.message()));
         return nullptr;
     }
     lod->setFileName(1, file);
@@ -150,9 +173,15 @@ osg::ref_ptr<osg::Node> TileWriter::createInnerNode(unsigned int level, uint64_t
 osg::ref_ptr<GlyphCloud> TileWriter::createCloud(const TileGlyphs& glyphs) const
 {
     const std::vector<float>& radii = glyphs.radii;
-    osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud(_style, osg::CopyOp::SHALLOW_COPY);
+    // Arrays of its own from the start (the style's are empty): a cloud attaches its arrays to
+    // itself, and threads make clouds side by side. The StateSets are shared.
+    osg::ref_ptr<GlyphCloud> cloud;
+    {
+        std::lock_guard<std::mutex> lock(_styleMutex);
+        cloud = new GlyphCloud(_style, osg::CopyOp::DEEP_COPY_ARRAYS | osg::CopyOp::DEEP_COPY_PRIMITIVES);
+        cloud->setStateSet(_tileStateSet.get());
+    }
     cloud->setOrigin(_origin);
-    cloud->setStateSet(_tileStateSet.get());
     cloud->setCompressedPositions(_options.compressedPositions);
     // The positions last: the cloud is consistent after each call.
     cloud->setPositions(new osg::Vec3Array);
@@ -190,17 +219,25 @@ osg::ref_ptr<GlyphCloud> TileWriter::createCloud(const TileGlyphs& glyphs) const
 
 TileTree::TileTree(TileGlyphs& glyphs, TileWriter& writer) : _glyphs(glyphs), _writer(writer)
 {
+    // Two halves keyed and sorted side by side, then merged.
     const OctreeCube& cube = writer.getCube();
     std::vector<std::pair<uint64_t, unsigned int>> keyed(glyphs.positions.size());
-    for (std::size_t i = 0; i < keyed.size(); ++i)
-        keyed[i] = {cube.code(osg::Vec3d(glyphs.positions[i])), static_cast<unsigned int>(i)};
-    std::sort(keyed.begin(), keyed.end());
+    const auto sortRange = [&](std::size_t first, std::size_t last)
+    {
+        for (std::size_t i = first; i < last; ++i)
+            keyed[i] = {cube.code(osg::Vec3d(glyphs.positions[i])), static_cast<unsigned int>(i)};
+        std::sort(keyed.begin() + first, keyed.begin() + last);
+    };
+    const std::size_t middle = keyed.size() / 2;
+    writer.getThreads().runBoth([&] { sortRange(0, middle); }, [&] { sortRange(middle, keyed.size()); });
     _codes.resize(keyed.size());
     std::vector<unsigned int> order(keyed.size());
-    for (std::size_t i = 0; i < keyed.size(); ++i)
+    for (std::size_t i = 0, a = 0, b = middle; i < keyed.size(); ++i)
     {
-        _codes[i] = keyed[i].first;
-        order[i] = keyed[i].second;
+        const bool fromFirst = b == keyed.size() || (a < middle && keyed[a] < keyed[b]);
+        const std::pair<uint64_t, unsigned int>& next = fromFirst ? keyed[a++] : keyed[b++];
+        _codes[i] = next.first;
+        order[i] = next.second;
     }
     keyed = {};
     // One array at a time, through a copy: permuting in place, cycle by cycle, reads memory out
@@ -214,11 +251,18 @@ TileTree::TileTree(TileGlyphs& glyphs, TileWriter& writer) : _glyphs(glyphs), _w
             sorted[i] = values[order[i]];
         values.swap(sorted);
     };
-    reorder(glyphs.positions);
-    reorder(glyphs.radii);
-    reorder(glyphs.scalars);
-    reorder(glyphs.colors);
-    reorder(glyphs.vectors);
+    writer.getThreads().runBoth(
+        [&]
+        {
+            reorder(glyphs.positions);
+            reorder(glyphs.colors);
+        },
+        [&]
+        {
+            reorder(glyphs.radii);
+            reorder(glyphs.scalars);
+            reorder(glyphs.vectors);
+        });
 }
 
 std::pair<std::size_t, std::size_t> TileTree::rangeOf(unsigned int level, uint64_t prefix) const
@@ -231,15 +275,19 @@ std::pair<std::size_t, std::size_t> TileTree::rangeOf(unsigned int level, uint64
 osg::ref_ptr<osg::Node> TileTree::buildNode(unsigned int level, uint64_t prefix, std::size_t begin,
                                             std::size_t end)
 {
-    const bool leaf = end - begin <= _writer.getOptions().maxGlyphsPerTile || level == MORTON_LEVELS ||
-                      _codes[begin] == _codes[end - 1];
+    if (_writer.failed())
+        return nullptr;
+    const std::size_t tileGlyphs = _writer.getOptions().maxGlyphsPerTile;
+    const bool leaf = end - begin <= tileGlyphs || level == MORTON_LEVELS || _codes[begin] == _codes[end - 1];
     if (leaf)
     {
         osg::ref_ptr<GlyphCloud> cloud = createLeaf(begin, end);
         _writer.addDone(end - begin);
         return cloud;
     }
-    osg::ref_ptr<osg::Group> children = new osg::Group;
+    // The octants' subtrees, each of several tiles on a thread of its own while one is free.
+    osg::ref_ptr<osg::Node> octants[8];
+    std::thread threads[8];
     std::size_t first = begin;
     for (uint64_t octant = 0; octant < 8; ++octant)
     {
@@ -247,15 +295,23 @@ osg::ref_ptr<osg::Node> TileTree::buildNode(unsigned int level, uint64_t prefix,
         const std::size_t last = static_cast<std::size_t>(
             std::lower_bound(_codes.begin() + first, _codes.begin() + end, endCode(level + 1, childPrefix)) -
             _codes.begin());
-        if (last > first)
-        {
-            osg::ref_ptr<osg::Node> child = buildNode(level + 1, childPrefix, first, last);
-            if (!child)
-                return nullptr;
-            children->addChild(child.get());
-        }
+        const auto build = [this, &octants, octant, level, childPrefix, first, last]
+        { octants[octant] = buildNode(level + 1, childPrefix, first, last); };
+        if (last - first > PARALLEL_TILES * tileGlyphs && last < end)
+            threads[octant] = _writer.getThreads().start(build);
+        else if (last > first)
+            build();
         first = last;
     }
+    osg::ref_ptr<osg::Group> children = new osg::Group;
+    for (uint64_t octant = 0; octant < 8; ++octant)
+    {
+        _writer.getThreads().join(threads[octant]);
+        if (octants[octant])
+            children->addChild(octants[octant].get());
+    }
+    if (_writer.failed())
+        return nullptr;
     TileGlyphs representatives;
     addRepresentatives(level, begin, end, representatives);
     return _writer.createInnerNode(level, prefix, *children, boxOf(begin, end), representatives);

@@ -5,12 +5,15 @@
 #define OSGGLYPHS_TILETREE_H 1
 
 #include "TileOctree.h"
+#include "TileThreads.h"
 
 #include <osgGlyphsTiles/TileBuilder>
 
 #include <osg/BoundingBox>
 #include <osgDB/Archive>
 
+#include <atomic>
+#include <mutex>
 #include <vector>
 
 namespace osgGlyphsTiles
@@ -39,7 +42,8 @@ struct TileGlyphs
 
 /** What every tile of a dataset shares (style, octree cube, origin, colour range) and where the
  * tiles go: each inner node's children are written into the archive as it is made, or, without
- * an archive, kept in place. */
+ * an archive, kept in place. Its calls are safe from the threads of getThreads(), which write
+ * into the archive one at a time. */
 class TileWriter
 {
 public:
@@ -52,6 +56,8 @@ public:
     const OctreeCube& getCube() const { return _cube; }
     /** log2 of TileOptions::cellsPerAxis. */
     unsigned int getCellLevels() const { return _cellLevels; }
+    /** The threads that cut subtrees side by side (TileOptions::threads). */
+    TileThreads& getThreads() { return _threads; }
 
     osg::ref_ptr<osgGlyphs::GlyphCloud> createCloud(const TileGlyphs& glyphs) const;
 
@@ -66,7 +72,10 @@ public:
      * from there to the end. */
     void setProgress(double fraction);
 
-    const std::string& getError() const { return _error; }
+    /** Records the first error: every thread then stops. */
+    void fail(const std::string& error);
+    bool failed() const { return _failed; }
+    std::string getError() const;
 
 private:
     const osgGlyphs::GlyphCloud& _style;
@@ -82,6 +91,11 @@ private:
     std::size_t _done = 0;
     double _leavesStart = 0.0;
     std::string _error;
+    std::atomic<bool> _failed{false};
+    TileThreads _threads;
+    mutable std::mutex _progressMutex; // _done, _leavesStart, _error and the progress calls
+    mutable std::mutex _styleMutex;    // the style's and the tiles' StateSets' parents
+    std::mutex _archiveMutex;
 };
 
 /** The octree over glyphs and the tiles made from it. The glyphs are a dataset, or a run of
