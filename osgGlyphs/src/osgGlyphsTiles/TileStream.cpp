@@ -73,21 +73,22 @@ public:
 
     bool count(TileSpill& spill, const TileGlyphs& tail, std::string& error)
     {
-        std::vector<std::size_t> counts(std::size_t(1) << 3 * _countLevel, 0);
+        std::vector<std::size_t> counts[2];
+        for (auto& half : counts)
+            half.assign(std::size_t(1) << 3 * _countLevel, 0);
         const unsigned int shift = 3 * (MORTON_LEVELS - _countLevel);
-        const OctreeCube& cube = _writer.getCube();
         if (!readGlyphs(
                 spill, tail, _writer, 0.0, COUNTED,
                 [&](const TileGlyphs& block)
                 {
-                    for (const osg::Vec3f& p : block.positions)
-                        ++counts[cube.code(osg::Vec3d(p)) >> shift];
+                    forEachCode(block, [&](unsigned int half, std::size_t, uint64_t code)
+                                { ++counts[half][code >> shift]; });
                 },
                 error))
             return false;
-        _before.assign(counts.size() + 1, 0);
-        for (std::size_t i = 0; i < counts.size(); ++i)
-            _before[i + 1] = _before[i] + counts[i];
+        _before.assign(counts[0].size() + 1, 0);
+        for (std::size_t i = 0; i < counts[0].size(); ++i)
+            _before[i + 1] = _before[i] + counts[0][i] + counts[1][i];
         findUnits(0, 0);
         return true;
     }
@@ -122,8 +123,8 @@ public:
                 return false;
             }
         }
-        const OctreeCube& cube = _writer.getCube();
         std::vector<std::vector<unsigned int>> indices(_partitions.size());
+        std::vector<unsigned int> partitionOf;
         bool written = true;
         if (!readGlyphs(
                 spill, tail, _writer, COUNTED, DISTRIBUTED,
@@ -131,14 +132,17 @@ public:
                 {
                     for (auto& list : indices)
                         list.clear();
+                    partitionOf.resize(block.size());
+                    forEachCode(
+                        block,
+                        [&](unsigned int, std::size_t i, uint64_t code)
+                        {
+                            partitionOf[i] = static_cast<unsigned int>(
+                                std::upper_bound(_partitionCodes.begin(), _partitionCodes.end(), code) -
+                                _partitionCodes.begin() - 1);
+                        });
                     for (std::size_t i = 0; i < block.size(); ++i)
-                    {
-                        const uint64_t code = cube.code(osg::Vec3d(block.positions[i]));
-                        const std::size_t p =
-                            std::upper_bound(_partitionCodes.begin(), _partitionCodes.end(), code) -
-                            _partitionCodes.begin() - 1;
-                        indices[p].push_back(static_cast<unsigned int>(i));
-                    }
+                        indices[partitionOf[i]].push_back(static_cast<unsigned int>(i));
                     for (std::size_t p = 0; p < indices.size() && written; ++p)
                         written = _partitions[p]->append(block, indices[p], error);
                 },
@@ -180,6 +184,22 @@ public:
     }
 
 private:
+    /** Calls visit(half, i, code) with the Morton code of each glyph i of block: on two threads,
+     * one for each half (0, 1) of the block. */
+    template <typename Visit>
+    void forEachCode(const TileGlyphs& block, const Visit& visit)
+    {
+        const OctreeCube& cube = _writer.getCube();
+        const auto visitRange = [&](unsigned int half, std::size_t first, std::size_t last)
+        {
+            for (std::size_t i = first; i < last; ++i)
+                visit(half, i, cube.code(osg::Vec3d(block.positions[i])));
+        };
+        const std::size_t middle = block.size() / 2;
+        _writer.getThreads().runBoth([&] { visitRange(0, 0, middle); },
+                                     [&] { visitRange(1, middle, block.size()); });
+    }
+
     std::size_t glyphsIn(unsigned int level, uint64_t prefix) const
     {
         const unsigned int shift = 3 * (_countLevel - level);
