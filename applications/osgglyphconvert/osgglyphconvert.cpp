@@ -237,21 +237,37 @@ unsigned int sharesOf(const std::string& path, std::size_t maxGlyphs)
     return static_cast<unsigned int>(std::clamp(std::ceil(bytes / 12.0 / double(maxGlyphs)), 1.0, 65536.0));
 }
 
-/** Adds the glyphs of one frame of a point file, or of one share of it under shares (which must
- * then be given beginShare() for it), to builder, which is made from the first. */
-bool addFromFile(const ConvertOptions& options, ConvertProgress& progress, SequentialShares* shares,
-                 osg::ref_ptr<osgGlyphsTiles::TileBuilder>& builder, std::string& error)
+/** A point file, or one share of it, as read. */
+struct ReadPoints
+{
+    osg::ref_ptr<osgGlyphsData::PointDataset> dataset;
+    std::string error;
+};
+
+ReadPoints readPoints(const ConvertOptions& options, const osgGlyphsData::PointShare& share,
+                      ConvertProgress* progress)
 {
     osgGlyphsData::PointReadOptions read;
     read.format = options.format;
-    read.progress = [&progress](uint64_t done, uint64_t total)
-    { progress.update(total ? double(done) / total : 0.0); };
+    if (progress)
+        read.progress = [progress](uint64_t done, uint64_t total)
+        { progress->update(total ? double(done) / total : 0.0); };
     read.warning = [](const std::string& warning)
     { std::cerr << PROGRAM << ": warning: " << warning << std::endl; };
-    if (shares)
-        read.share = shares->getShare();
-    osg::ref_ptr<osgGlyphsData::PointDataset> dataset =
-        osgGlyphsData::readPointFile(options.input, read, error);
+    read.share = share;
+    ReadPoints points;
+    points.dataset = osgGlyphsData::readPointFile(options.input, read, points.error);
+    return points;
+}
+
+/** Adds the glyphs of one frame of points read from a file, or from one share of it under
+ * shares (which must then be given beginShare() for it), to builder, which is made from the
+ * first. */
+bool addPoints(const ConvertOptions& options, const ReadPoints& points, SequentialShares* shares,
+               osg::ref_ptr<osgGlyphsTiles::TileBuilder>& builder, std::string& error)
+{
+    osgGlyphsData::PointDataset* dataset = points.dataset.get();
+    error = points.error;
     if (!dataset || (shares && !osgGlyphsData::unifyShares(*dataset, *shares, error)))
         return false;
     if (options.frame >= dataset->getNumFrames())
@@ -286,35 +302,56 @@ bool addFromFile(const ConvertOptions& options, ConvertProgress& progress, Seque
 }
 
 /** The tiles of one frame of a point file, read whole or, when larger than the glyphs held in
- * memory, in shares over a few passes (see SequentialShares). */
+ * memory, in shares over a few passes (see SequentialShares), each share read while the one
+ * before is added. */
 osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildFromFile(const ConvertOptions& options,
                                                         ConvertProgress& progress, std::string& error)
 {
     osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder;
     const unsigned int count = sharesOf(options.input, options.tiles.maxGlyphsInMemory);
+    osgGlyphsData::PointShare share;
+    share.count = count;
     if (count == 1)
     {
         progress.start("reading " + options.input);
-        return addFromFile(options, progress, nullptr, builder, error) ? builder : nullptr;
+        return addPoints(options, readPoints(options, share, &progress), nullptr, builder, error) ? builder
+                                                                                                  : nullptr;
     }
+    const auto readShare = [&options, share](unsigned int index)
+    {
+        osgGlyphsData::PointShare part = share;
+        part.index = index;
+        return std::async(std::launch::async, readPoints, std::cref(options), part, nullptr);
+    };
     osg::ref_ptr<SequentialShares> shares = new SequentialShares(count);
+    std::future<ReadPoints> next = readShare(0);
     for (unsigned int pass = 1; pass <= MAX_SHARE_PASSES; ++pass)
     {
         builder = nullptr;
+        progress.start("reading " + options.input + ", pass " + std::to_string(pass));
         for (unsigned int index = 0; index < count; ++index)
         {
-            progress.start("reading " + options.input + ", pass " + std::to_string(pass) + ", part " +
-                           std::to_string(index + 1) + " of " + std::to_string(count));
+            const ReadPoints points = next.get();
+            // The next share is read meanwhile; after the last, the first again when this pass
+            // is already known not to be the last.
+            if (index + 1 < count)
+                next = readShare(index + 1);
+            else if (!shares->isSettled())
+                next = readShare(0);
             shares->beginShare(index);
-            if (!addFromFile(options, progress, shares.get(), builder, error))
+            if (!addPoints(options, points, shares.get(), builder, error))
                 return nullptr;
+            progress.update(double(index + 1) / count);
         }
         if (shares->endPass() && builder)
         {
+            progress.finish();
             std::cerr << PROGRAM << ": read " << options.input << " in " << count << " parts, " << pass
                       << (pass == 1 ? " pass" : " passes") << std::endl;
             return builder;
         }
+        if (!next.valid())
+            next = readShare(0);
     }
     error = options.input + ": the mapping of its " + std::to_string(count) + " parts did not settle in " +
             std::to_string(MAX_SHARE_PASSES) + " passes (try --radius and --range)";
