@@ -210,10 +210,16 @@ osg::ref_ptr<osg::Node> TileBuilder::createTree() const
     return root;
 }
 
-bool TileBuilder::write(const std::string& path, std::string& error, const ProgressFunction& progress) const
+bool TileBuilder::write(const std::string& path, std::string& error, const ProgressFunction& progress)
 {
     if (!findTileSerializers(error))
         return false;
+    if (_spill && !_glyphs->positions.empty())
+    {
+        if (!spill(error))
+            return false;
+        _glyphs->release();
+    }
     if (osgDB::fileExists(path) && std::remove(path.c_str()) != 0)
     {
         error = path + ": cannot replace the file";

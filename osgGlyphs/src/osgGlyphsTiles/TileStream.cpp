@@ -157,9 +157,12 @@ public:
         {
             TileGlyphs glyphs;
             glyphs.origin = origin;
+            const std::size_t count = _partitions[p]->size();
             if (!_partitions[p]->read(
-                    [&glyphs](const TileGlyphs& block)
+                    [&glyphs, count](const TileGlyphs& block)
                     {
+                        if (glyphs.positions.capacity() < count)
+                            glyphs.reserve(count, block);
                         glyphs.append(block);
                         return true;
                     },

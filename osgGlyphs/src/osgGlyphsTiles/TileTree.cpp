@@ -61,6 +61,27 @@ void TileGlyphs::clear()
     vectors.clear();
 }
 
+void TileGlyphs::release()
+{
+    positions = {};
+    radii = {};
+    scalars = {};
+    colors = {};
+    vectors = {};
+}
+
+void TileGlyphs::reserve(std::size_t count, const TileGlyphs& like)
+{
+    positions.reserve(count);
+    radii.reserve(count);
+    if (!like.scalars.empty())
+        scalars.reserve(count);
+    if (!like.colors.empty())
+        colors.reserve(count);
+    if (!like.vectors.empty())
+        vectors.reserve(count);
+}
+
 void TileGlyphs::append(const TileGlyphs& other, std::size_t i)
 {
     positions.push_back(other.positions[i]);

@@ -34,6 +34,10 @@ struct TileGlyphs
 
     std::size_t size() const { return positions.size(); }
     void clear();
+    /** Clears the arrays and gives their memory back. */
+    void release();
+    /** Makes room for count glyphs in the arrays that like uses. */
+    void reserve(std::size_t count, const TileGlyphs& like);
     /** Appends glyph i of other. */
     void append(const TileGlyphs& other, std::size_t i);
     /** Appends every glyph of other. */
