@@ -198,9 +198,7 @@ private:
             for (std::size_t i = first; i < last; ++i)
                 visit(half, i, cube.code(osg::Vec3d(block.positions[i])));
         };
-        const std::size_t middle = block.size() / 2;
-        _writer.getThreads().runBoth([&] { visitRange(0, 0, middle); },
-                                     [&] { visitRange(1, middle, block.size()); });
+        _writer.getThreads().runHalves(block.size(), visitRange);
     }
 
     std::size_t glyphsIn(unsigned int level, uint64_t prefix) const

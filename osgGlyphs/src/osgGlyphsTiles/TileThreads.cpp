@@ -40,3 +40,12 @@ void TileThreads::runBoth(const std::function<void()>& first, const std::functio
     second();
     join(thread);
 }
+
+std::size_t TileThreads::runHalves(
+    std::size_t count,
+    const std::function<void(unsigned int half, std::size_t first, std::size_t last)>& visit)
+{
+    const std::size_t middle = count / 2;
+    runBoth([&] { visit(0, 0, middle); }, [&] { visit(1, middle, count); });
+    return middle;
+}

@@ -5,6 +5,7 @@
 #define OSGGLYPHS_TILETHREADS_H 1
 
 #include <atomic>
+#include <cstddef>
 #include <functional>
 #include <thread>
 
@@ -35,6 +36,12 @@ public:
     /** Runs first on another thread (when one is free) and second on this one, and waits for
      * both. */
     void runBoth(const std::function<void()>& first, const std::function<void()>& second);
+
+    /** Calls visit(half, first, last) for the two halves (0, 1) of [0, count) through runBoth();
+     * returns where the second half starts. */
+    std::size_t
+    runHalves(std::size_t count,
+              const std::function<void(unsigned int half, std::size_t first, std::size_t last)>& visit);
 
 private:
     unsigned int _threads;

@@ -243,14 +243,13 @@ TileTree::TileTree(TileGlyphs& glyphs, TileWriter& writer) : _glyphs(glyphs), _w
     // Two halves keyed and sorted side by side, then merged.
     const OctreeCube& cube = writer.getCube();
     std::vector<std::pair<uint64_t, unsigned int>> keyed(glyphs.positions.size());
-    const auto sortRange = [&](std::size_t first, std::size_t last)
+    const auto sortRange = [&](unsigned int, std::size_t first, std::size_t last)
     {
         for (std::size_t i = first; i < last; ++i)
             keyed[i] = {cube.code(osg::Vec3d(glyphs.positions[i])), static_cast<unsigned int>(i)};
         std::sort(keyed.begin() + first, keyed.begin() + last);
     };
-    const std::size_t middle = keyed.size() / 2;
-    writer.getThreads().runBoth([&] { sortRange(0, middle); }, [&] { sortRange(middle, keyed.size()); });
+    const std::size_t middle = writer.getThreads().runHalves(keyed.size(), sortRange);
     _codes.resize(keyed.size());
     std::vector<unsigned int> order(keyed.size());
     for (std::size_t i = 0, a = 0, b = middle; i < keyed.size(); ++i)
