@@ -83,6 +83,9 @@ void describeOptions(osg::ApplicationUsage& usage)
                                                     "as given, instead of 16-bit integers on a grid over "
                                                     "each tile (6 bytes, within 1/131,064 of the tile).");
     usage.addCommandLineOption("--threads <n>", "Threads cutting tiles (default: one per core).");
+    usage.addCommandLineOption("--glyph-budget <n>",
+                               "The most glyphs a view of the archive draws, kept in its root for every "
+                               "viewer, stock osgviewer included (default 2000000; 0: no budget).");
     usage.addCommandLineOption("-h or --help", "Display this help.");
 }
 
@@ -151,6 +154,16 @@ bool readOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::s
         options.tiles.maxGlyphsInMemory = static_cast<std::size_t>(memoryGlyphs);
     }
     arguments.read("--temp-dir", options.tiles.temporaryDirectory);
+    double budget = 0.0;
+    if (arguments.read("--glyph-budget", budget))
+    {
+        if (!(budget >= 0.0 && budget <= 1e12) || budget != std::floor(budget))
+        {
+            error = "--glyph-budget needs a whole number of glyphs from 0 (no budget) to 1e12";
+            return false;
+        }
+        options.tiles.glyphBudget = static_cast<std::size_t>(budget);
+    }
     if (arguments.read("--float-positions"))
         options.tiles.compressedPositions = false;
     for (int i = 1; i < arguments.argc(); ++i)

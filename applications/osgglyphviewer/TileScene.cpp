@@ -2,9 +2,9 @@
 
 #include "BuiltinScenes.h"
 
-#include <osgGlyphsTiles/TileBudget>
 #include <osgGlyphsTiles/TileBuilder>
 #include <osgGlyphsTiles/TileChecksum>
+#include <osgGlyphsTiles/TileRoot>
 
 #include <osg/NodeVisitor>
 #include <osgDB/FileNameUtils>
@@ -69,11 +69,20 @@ osg::ref_ptr<ViewerScene> createTileScene(const ViewerOptions& options, std::str
         error = options.file + ": root tile: " + checksumError;
         return nullptr;
     }
-    // Tiles paged in later are checked as they are read; a corrupt one is left out.
-    osgDB::Registry* registry = osgDB::Registry::instance();
-    registry->setReadFileCallback(
-        new osgGlyphsTiles::TileCheckingReadCallback(registry->getReadFileCallback()));
-    root->addCullCallback(new osgGlyphsTiles::TileBudget(options.glyphBudget));
+    // The root's TileRoot checks the tiles paged in below it (a corrupt one is left out) and
+    // keeps the budget; an archive of an earlier osgglyphconvert gets one here.
+    osg::ref_ptr<osgGlyphsTiles::TileRoot> tileRoot = dynamic_cast<osgGlyphsTiles::TileRoot*>(root.get());
+    if (!tileRoot)
+    {
+        tileRoot = new osgGlyphsTiles::TileRoot;
+        std::string title;
+        if (root->getUserValue(osgGlyphsTiles::COLOR_TITLE_USER_VALUE, title))
+            tileRoot->setUserValue(osgGlyphsTiles::COLOR_TITLE_USER_VALUE, title);
+        tileRoot->addChild(root.get());
+        root = tileRoot;
+    }
+    if (options.glyphBudget)
+        tileRoot->setGlyphBudget(options.glyphBudget);
     FirstCloud first;
     root->accept(first);
     osgGlyphsData::ColorKey key;
@@ -87,8 +96,10 @@ osg::ref_ptr<ViewerScene> createTileScene(const ViewerOptions& options, std::str
             key.max = cloud->getScalarRangeMax();
         }
     osg::ref_ptr<ViewerScene> scene = createFixedScene(root.get(), key);
-    scene->setDescription(options.file + ": glyph tiles paged in by size on screen, at most " +
-                          std::to_string(options.glyphBudget) + " glyphs a frame" +
-                          (first.get() ? std::string() : " (no glyphs in the root tile)"));
+    const std::size_t budget = tileRoot->getGlyphBudget();
+    scene->setDescription(
+        options.file + ": glyph tiles paged in by size on screen, " +
+        (budget ? "at most " + std::to_string(budget) + " glyphs a frame" : "no glyph budget") +
+        (first.get() ? std::string() : " (no glyphs in the root tile)"));
     return scene;
 }

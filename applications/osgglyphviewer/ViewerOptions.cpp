@@ -241,7 +241,8 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--seed <s>", "The seed of --random (default 1).");
     usage.addCommandLineOption("--glyph-budget <n>",
                                "A tile archive of osgglyphconvert (.osga): the most glyphs a frame draws; "
-                               "tiles refine, largest on screen first, within it (default 2000000).");
+                               "tiles refine, largest on screen first, within it (default: the archive's, "
+                               "2000000 unless osgglyphconvert --glyph-budget set another).");
 
     osgGlyphsData::describeGlyphMappingArguments(usage);
 

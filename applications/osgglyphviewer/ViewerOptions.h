@@ -8,7 +8,6 @@
 
 #include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsHeadless/HeadlessContext>
-#include <osgGlyphsTiles/TileBudget>
 
 #include <osg/ApplicationUsage>
 #include <osg/ArgumentParser>
@@ -44,7 +43,7 @@ struct ViewerOptions
     unsigned int seed = 1;
     bool follow = false;         // --follow: re-read the growing file, show frames as they complete
     double followTimeout = 60.0; // --follow-timeout S: offscreen, the longest wait for a frame
-    std::size_t glyphBudget = osgGlyphsTiles::TileBudget::DEFAULT_MAX_GLYPHS; // tile archives
+    std::size_t glyphBudget = 0; // tile archives; 0: the archive's own
 
     osgGlyphsData::GlyphMappingOptions mapping;
 

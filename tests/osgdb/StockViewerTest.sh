@@ -3,7 +3,8 @@
 # Xvfb: StockViewerTest.sh <image check> <point file> <work dir> [osgviewer options...]
 # Takes a screenshot with osgviewer's key c, checks that it shows glyphs, closes the window
 # with Escape and checks the exit code. Exits 77 (ctest SKIP_RETURN_CODE) when osgviewer,
-# Xvfb or xdotool is missing.
+# Xvfb or xdotool is missing. With LOG_MUST_MATCH set, osgviewer's output must match that
+# extended regular expression.
 set -u
 check=$1 file=$2 work=$3
 shift 3
@@ -32,4 +33,5 @@ sleep 0.5
 
 close_with_escape
 grep -qi "error\|could not find plugin" viewer.log && fail "osgviewer reported an error"
+[[ -z ${LOG_MUST_MATCH:-} ]] || grep -qE "$LOG_MUST_MATCH" viewer.log || fail "osgviewer did not print /$LOG_MUST_MATCH/"
 echo "ok: osgviewer drew $file through osgdb_glyphs ($shot)"

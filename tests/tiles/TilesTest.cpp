@@ -8,6 +8,7 @@
 #include <osgGlyphsTiles/TileBudget>
 #include <osgGlyphsTiles/TileBuilder>
 #include <osgGlyphsTiles/TileChecksum>
+#include <osgGlyphsTiles/TileRoot>
 
 #include <osg/PagedLOD>
 #include <osgDB/DatabasePager>
@@ -22,6 +23,7 @@
 #include <iterator>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace osgGlyphsTest;
@@ -134,7 +136,11 @@ void renderFlatAndFinest(const GlyphCloud& cloud, const std::string& name,
 {
     osg::ref_ptr<osg::Node> root = convert(cloud, name, options);
     ASSERT_TRUE(root.valid());
-    ASSERT_NE(dynamic_cast<osg::PagedLOD*>(root.get()), nullptr) << "20,000 glyphs make more than one tile";
+    const osgGlyphsTiles::TileRoot* tileRoot = dynamic_cast<osgGlyphsTiles::TileRoot*>(root.get());
+    ASSERT_NE(tileRoot, nullptr) << "the archive's root";
+    ASSERT_EQ(tileRoot->getNumChildren(), 1u);
+    ASSERT_NE(dynamic_cast<const osg::PagedLOD*>(tileRoot->getChild(0)), nullptr)
+        << "20,000 glyphs make more than one tile";
     Renderer flatRenderer(SIZE, SIZE), pagedRenderer(SIZE, SIZE);
     for (Renderer* renderer : {&flatRenderer, &pagedRenderer})
     {
@@ -266,42 +272,89 @@ public:
     std::size_t glyphs = 0;
 };
 
+/** The PagedLODs of a graph, and how many of them read through a given read callback. */
+class PagedLODs : public osg::NodeVisitor
+{
+public:
+    explicit PagedLODs(const osgDB::ReadFileCallback* callback)
+        : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN), _callback(callback)
+    {
+    }
+    void apply(osg::PagedLOD& lod) override
+    {
+        ++count;
+        const osgDB::Options* options = dynamic_cast<const osgDB::Options*>(lod.getDatabaseOptions());
+        checked += options && options->getReadFileCallback() == _callback;
+        loaded += lod.getNumChildren() > 1;
+        traverse(lod);
+    }
+    int count = 0, checked = 0, loaded = 0;
+
+private:
+    const osgDB::ReadFileCallback* _callback;
+};
+
+const osgGlyphsTiles::TileRoot* tileRootOf(const osg::Node* node)
+{
+    return dynamic_cast<const osgGlyphsTiles::TileRoot*>(node);
+}
+
+/** Renders the archive's root, read as stock osgviewer reads it: nothing but osgDB::readNodeFile. */
+Frame renderAsStockViewer(osg::Node* root)
+{
+    Renderer renderer(SIZE, SIZE);
+    renderer.setPerspective(30.0, 0.1, 10.0);
+    renderer.setLookAt(osg::Vec3d(1.9, -1.2, 1.4), CENTRE, osg::Vec3d(0.0, 0.0, 1.0));
+    int frames = 0;
+    return renderPaged(renderer, root, frames);
+}
+
+// The budget is stored in the archive's root, so any viewer keeps it.
 TEST(TileBudget, KeepsTheGlyphsDrawnWithinItAndPagesLess)
 {
     osg::ref_ptr<GlyphCloud> cloud = randomCloud(20000, 0.008f, osgGlyphs::GlyphShape::Sphere);
-    auto render = [&](std::size_t budget, osgGlyphsTiles::TileBudget* callback)
+    auto render = [&](std::size_t budget)
     {
-        osg::ref_ptr<osg::Node> root = convert(*cloud, "tiles_budget_" + std::to_string(budget));
-        if (callback)
-            root->addCullCallback(callback);
-        Renderer renderer(SIZE, SIZE);
-        renderer.setPerspective(30.0, 0.1, 10.0);
-        renderer.setLookAt(osg::Vec3d(1.9, -1.2, 1.4), CENTRE, osg::Vec3d(0.0, 0.0, 1.0));
-        int frames = 0;
-        const Frame frame = renderPaged(renderer, root.get(), frames);
+        osgGlyphsTiles::TileOptions options = smallTiles();
+        options.glyphBudget = budget;
+        osg::ref_ptr<osg::Node> root = convert(*cloud, "tiles_budget_" + std::to_string(budget), options);
+        EXPECT_TRUE(tileRootOf(root.get()) && tileRootOf(root.get())->getGlyphBudget() == budget);
+        const Frame frame = renderAsStockViewer(root.get());
         saveFrame(frame, "tiles_budget_" + std::to_string(budget));
         LoadedGlyphs loaded;
         root->accept(loaded);
-        return std::make_pair(frame, loaded.glyphs);
+        return std::make_tuple(frame, loaded.glyphs, root);
     };
-    const auto unlimited = render(0, nullptr);
-    osg::ref_ptr<osgGlyphsTiles::TileBudget> budget = new osgGlyphsTiles::TileBudget(6000);
-    const auto limited = render(6000, budget.get());
+    const auto unlimited = render(0);
+    const auto limited = render(6000);
+    const osgGlyphsTiles::TileBudget* budget = tileRootOf(std::get<2>(limited).get())->getBudget();
     EXPECT_LE(budget->getLastGlyphs(), 6000u);
     EXPECT_GT(budget->getLastGlyphs(), 2000u) << "the budget refines what it can";
     EXPECT_GT(budget->getLastScale(), 1.0);
-    EXPECT_LT(limited.second, unlimited.second / 2) << "glyphs loaded";
+    EXPECT_LT(std::get<1>(limited), std::get<1>(unlimited) / 2) << "glyphs loaded";
     // Fewer, larger glyphs cover about as much.
-    const double coverage = double(countCovered(limited.first)) / countCovered(unlimited.first);
+    const double coverage = double(countCovered(std::get<0>(limited))) / countCovered(std::get<0>(unlimited));
     EXPECT_NEAR(coverage, 1.0, 0.15);
+
+    // Options replace the stored budget, as `osgviewer data.osga -O glyphBudget=3000` does.
+    osg::ref_ptr<osgDB::Options> options = new osgDB::Options("glyphBudget=3000");
+    osg::ref_ptr<osg::Node> asked = osgDB::readNodeFile(archivePath("tiles_budget_6000"), options.get());
+    ASSERT_TRUE(tileRootOf(asked.get()));
+    EXPECT_EQ(tileRootOf(asked.get())->getGlyphBudget(), 3000u);
+    options->setOptionString("glyphBudget=-3");
+    asked = osgDB::readNodeFile(archivePath("tiles_budget_6000"), options.get());
+    ASSERT_TRUE(tileRootOf(asked.get()));
+    EXPECT_EQ(tileRootOf(asked.get())->getGlyphBudget(), 6000u) << "a wrong option keeps the archive's";
 }
 
+// Read as stock osgviewer reads it, an archive checks its own tiles: the root's TileRoot gives
+// its checking read callback to every PagedLOD, tile by tile as they are paged in.
 TEST(CorruptTiles, AreRefusedWithOneErrorAndTheRestDraws)
 {
     osg::ref_ptr<GlyphCloud> cloud =
         randomCloud(20000, 0.4f * std::cbrt(1.0f / 20000.0f), osgGlyphs::GlyphShape::Sphere);
     osg::ref_ptr<osg::Node> intact = convert(*cloud, "tiles_intact");
-    ASSERT_TRUE(intact.valid());
+    ASSERT_TRUE(tileRootOf(intact.get()));
     // The same archive with bytes in its middle overwritten: inside a tile's glyphs.
     const std::string corruptPath = archivePath("tiles_corrupt");
     {
@@ -312,29 +365,22 @@ TEST(CorruptTiles, AreRefusedWithOneErrorAndTheRestDraws)
         std::ofstream(corruptPath, std::ios::binary) << bytes;
     }
     osg::ref_ptr<osg::Node> corrupt = osgDB::readNodeFile(corruptPath);
-    ASSERT_TRUE(corrupt.valid()) << "the root is intact";
+    ASSERT_TRUE(tileRootOf(corrupt.get())) << "the root is intact";
     std::string error;
     EXPECT_TRUE(osgGlyphsTiles::checkTileChecksum(*corrupt, error)) << error;
 
-    osgDB::Registry* registry = osgDB::Registry::instance();
-    osg::ref_ptr<osgDB::ReadFileCallback> previous = registry->getReadFileCallback();
-    osg::ref_ptr<osgGlyphsTiles::TileCheckingReadCallback> checking =
-        new osgGlyphsTiles::TileCheckingReadCallback(previous.get());
-    registry->setReadFileCallback(checking.get());
-    auto render = [](osg::Node* root)
-    {
-        Renderer renderer(SIZE, SIZE);
-        renderer.setPerspective(30.0, 0.1, 10.0);
-        renderer.setLookAt(osg::Vec3d(1.9, -1.2, 1.4), CENTRE, osg::Vec3d(0.0, 0.0, 1.0));
-        int frames = 0;
-        return renderPaged(renderer, root, frames);
-    };
-    const Frame intactFrame = render(intact.get());
-    EXPECT_TRUE(checking->getRefusedTiles().empty()) << "an intact archive is refused";
-    const Frame corruptFrame = render(corrupt.get());
-    registry->setReadFileCallback(previous.get());
+    const Frame intactFrame = renderAsStockViewer(intact.get());
+    const osgGlyphsTiles::TileCheckingReadCallback* intactChecking =
+        tileRootOf(intact.get())->getTileChecking();
+    EXPECT_TRUE(intactChecking->getRefusedTiles().empty()) << "an intact archive is refused";
+    PagedLODs lods(intactChecking);
+    intact->accept(lods);
+    EXPECT_GT(lods.loaded, 8) << "tiles paged in, several levels deep";
+    EXPECT_EQ(lods.checked, lods.count) << "PagedLODs that read without the checks";
+
+    const Frame corruptFrame = renderAsStockViewer(corrupt.get());
     saveFrame(corruptFrame, "tiles_corrupt");
-    const std::set<std::string> refused = checking->getRefusedTiles();
+    const std::set<std::string> refused = tileRootOf(corrupt.get())->getTileChecking()->getRefusedTiles();
     ASSERT_EQ(refused.size(), 1u) << "tiles refused";
     EXPECT_NE(refused.begin()->find("tiles_corrupt.osga/"), std::string::npos) << *refused.begin();
     // The refused tile's parent stands in for it: the picture covers what the intact one does.
@@ -360,7 +406,9 @@ void expectCoarseLevelLooksLikeTheFineOne(float radius, const std::string& name,
     osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder = new osgGlyphsTiles::TileBuilder(*cloud, options);
     std::string error;
     ASSERT_TRUE(builder->addGlyphs(*cloud, error)) << error;
-    osg::ref_ptr<osg::PagedLOD> root = dynamic_cast<osg::PagedLOD*>(builder->createTree().get());
+    osg::ref_ptr<osg::Group> tree = builder->createTree()->asGroup();
+    ASSERT_TRUE(tree.valid() && tree->getNumChildren() == 1);
+    osg::ref_ptr<osg::PagedLOD> root = dynamic_cast<osg::PagedLOD*>(tree->getChild(0));
     ASSERT_TRUE(root.valid());
     osg::ref_ptr<GlyphCloud> coarse = dynamic_cast<GlyphCloud*>(root->getChild(0));
     ASSERT_TRUE(coarse.valid());

@@ -27,6 +27,7 @@ expect_failure(osgglyphconvert 2 "needs an input file and an output file" "${CON
 expect_failure(osgglyphconvert 2 "out.ive: the output is an OSG archive" "${CONVERT}" --random 10 out.ive)
 expect_failure(osgglyphconvert 2 "--tile-cells needs a power of two" "${CONVERT}" --tile-cells 3 --random 10 out.osga)
 expect_failure(osgglyphconvert 2 "--threads needs a number from 1" "${CONVERT}" --threads 0 --random 10 out.osga)
+expect_failure(osgglyphconvert 2 "--glyph-budget needs a whole number of glyphs" "${CONVERT}" --glyph-budget 2.5 --random 10 out.osga)
 expect_failure(osgglyphconvert 1 ".*missing.xyz" "${CONVERT}" missing.xyz out.osga)
 expect_failure(osgglyphconvert 1 ".*malformed.lammpstrj:12:.*" "${CONVERT}" "${DATA_DIR}/malformed.lammpstrj" out.osga)
 

@@ -49,26 +49,20 @@ double predictGlyphs(osg::Node& node, osgUtil::CullVisitor& cv, double lodScale)
 
 }
 
-void TileBudget::operator()(osg::Node* node, osg::NodeVisitor* nv)
+double TileBudget::computeLODScale(osg::Node& node, osgUtil::CullVisitor& cv)
 {
-    osgUtil::CullVisitor* cv = nv ? nv->asCullVisitor() : nullptr;
-    if (!cv)
-    {
-        traverse(node, nv);
-        return;
-    }
-    const float baseScale = cv->getLODScale();
+    const float baseScale = cv.getLODScale();
     const double budget = static_cast<double>(_maxGlyphs);
-    double scale = 1.0, glyphs = predictGlyphs(*node, *cv, baseScale);
+    double scale = 1.0, glyphs = predictGlyphs(node, cv, baseScale);
     if (glyphs > budget)
     {
         // The smallest scale (on a log scale) whose prediction fits the budget.
         double low = 0.0, high = std::log2(MAX_SCALE);
-        double highGlyphs = predictGlyphs(*node, *cv, baseScale * MAX_SCALE);
+        double highGlyphs = predictGlyphs(node, cv, baseScale * MAX_SCALE);
         for (int step = 0; step < SCALE_STEPS; ++step)
         {
             const double middle = 0.5 * (low + high);
-            const double middleGlyphs = predictGlyphs(*node, *cv, baseScale * std::exp2(middle));
+            const double middleGlyphs = predictGlyphs(node, cv, baseScale * std::exp2(middle));
             if (middleGlyphs > budget)
                 low = middle;
             else
@@ -82,7 +76,19 @@ void TileBudget::operator()(osg::Node* node, osg::NodeVisitor* nv)
     }
     _lastGlyphs = static_cast<std::size_t>(glyphs);
     _lastScale = scale;
-    cv->setLODScale(static_cast<float>(baseScale * scale));
+    return scale;
+}
+
+void TileBudget::operator()(osg::Node* node, osg::NodeVisitor* nv)
+{
+    osgUtil::CullVisitor* cv = nv ? nv->asCullVisitor() : nullptr;
+    if (!cv)
+    {
+        traverse(node, nv);
+        return;
+    }
+    const float baseScale = cv->getLODScale();
+    cv->setLODScale(static_cast<float>(baseScale * computeLODScale(*node, *cv)));
     traverse(node, nv);
     cv->setLODScale(baseScale);
 }

@@ -1,5 +1,6 @@
 #include <osgGlyphsTiles/TileBuilder>
 #include <osgGlyphsTiles/TileChecksum>
+#include <osgGlyphsTiles/TileRoot>
 
 #include "TileStream.h"
 
@@ -33,6 +34,7 @@ namespace
 const char* const ROOT_FILE = "root.osgb";
 
 const char* const GLYPH_CLOUD_WRAPPER = "osgGlyphs::GlyphCloud";
+const char* const TILE_ROOT_WRAPPER = "osgGlyphsTiles::TileRoot";
 
 bool isPowerOfTwo(unsigned int value)
 {
@@ -59,7 +61,16 @@ bool osgGlyphsTiles::findTileSerializers(std::string& error)
     static std::mutex mutex;
     std::lock_guard<std::mutex> lock(mutex);
     osgDB::ObjectWrapperManager* wrappers = osgDB::Registry::instance()->getObjectWrapperManager();
-    if (wrappers->findWrapper(GLYPH_CLOUD_WRAPPER))
+    // The wrapper of each plugin's class, the first one missing.
+    const auto missing = [wrappers]() -> const char*
+    {
+        if (!wrappers->findWrapper(GLYPH_CLOUD_WRAPPER))
+            return "osgdb_serializers_osgglyphs";
+        if (!wrappers->findWrapper(TILE_ROOT_WRAPPER))
+            return "osgdb_serializers_osgglyphstiles";
+        return nullptr;
+    };
+    if (!missing())
         return true;
     // The osgPlugins folder beside this library (installed), then the build tree's.
     Dl_info library;
@@ -67,11 +78,12 @@ bool osgGlyphsTiles::findTileSerializers(std::string& error)
     if (dladdr(reinterpret_cast<void*>(&findTileSerializers), &library) && library.dli_fname)
         paths.push_back(osgDB::getFilePath(osgDB::getRealPath(library.dli_fname)));
     paths.push_back(OSGGLYPHS_BUILD_LIBRARY_DIR);
-    if (wrappers->findWrapper(GLYPH_CLOUD_WRAPPER))
+    const char* plugin = missing();
+    if (!plugin)
         return true;
-    error = "the osgGlyphs serializers (osgdb_serializers_osgglyphs) are not on OSG's plugin path: set "
-            "OSG_LIBRARY_PATH to the folder that holds osgPlugins-" +
-            std::string(osgGetVersion()) + "/osgdb_serializers_osgglyphs.so";
+    error = std::string("the osgGlyphs serializers (") + plugin +
+            ") are not on OSG's plugin path: set OSG_LIBRARY_PATH to the folder that holds osgPlugins-" +
+            osgGetVersion() + "/" + plugin + ".so";
     return false;
 }
 
@@ -204,9 +216,18 @@ osg::ref_ptr<osg::Node> TileBuilder::createTree() const
 {
     std::string error;
     TileWriter writer(*_style, _options, cubeAround(_box), *_glyphs, nullptr, getNumGlyphs(), {});
-    osg::ref_ptr<osg::Node> root = buildTree(writer, error);
-    if (root && !_colorTitle.empty())
+    osg::ref_ptr<osg::Node> tree = buildTree(writer, error);
+    return tree ? createRoot(*tree) : nullptr;
+}
+
+osg::ref_ptr<TileRoot> TileBuilder::createRoot(osg::Node& tree) const
+{
+    osg::ref_ptr<TileRoot> root = new TileRoot;
+    root->setGlyphBudget(_options.glyphBudget);
+    if (!_colorTitle.empty())
         root->setUserValue(COLOR_TITLE_USER_VALUE, _colorTitle);
+    root->addChild(&tree);
+    setTileChecksum(*root);
     return root;
 }
 
@@ -240,10 +261,8 @@ bool TileBuilder::write(const std::string& path, std::string& error, const Progr
     TileWriter writer(*_style, _options, cubeAround(_box), *_glyphs, archive.get(), getNumGlyphs(), progress);
     if (written)
         root = buildTree(writer, treeError);
-    if (root && !_colorTitle.empty())
-        root->setUserValue(COLOR_TITLE_USER_VALUE, _colorTitle);
     if (root)
-        setTileChecksum(*root);
+        root = createRoot(*root);
     written = written && root.valid() && archive->writeNode(*root, ROOT_FILE).success();
     archive->close();
     if (!written)

@@ -1,4 +1,5 @@
 #include <osgGlyphsTiles/TileChecksum>
+#include <osgGlyphsTiles/TileRoot>
 
 #include <osgGlyphs/GlyphCloud>
 
@@ -115,16 +116,25 @@ osgDB::ReaderWriter::ReadResult TileCheckingReadCallback::readNode(const std::st
         if (_refused.count(file))
             return osgDB::ReaderWriter::ReadResult("refused earlier");
     }
+    // The next callback: the one given, else the Registry's (an application's own).
+    osgDB::ReadFileCallback* next = _next.get();
+    if (!next && osgDB::Registry::instance()->getReadFileCallback() != this)
+        next = osgDB::Registry::instance()->getReadFileCallback();
     osgDB::ReaderWriter::ReadResult result =
-        _next.valid() ? _next->readNode(file, options)
-                      : osgDB::Registry::instance()->readNodeImplementation(file, options);
+        next ? next->readNode(file, options)
+             : osgDB::Registry::instance()->readNodeImplementation(file, options);
     if (!tile)
         return result;
     std::string error;
     if (!result.validNode())
         error = "cannot be read" + (result.message().empty() ? std::string() : ": " + result.message());
     else if (checkTileChecksum(*result.getNode(), error))
+    {
+        // The tile's own PagedLODs read their children through this callback too.
+        if (options && options->getReadFileCallback() == this)
+            setTileDatabaseOptions(*result.getNode(), options->cloneOptions());
         return result;
+    }
     {
         std::lock_guard<std::mutex> lock(_mutex);
         if (!_refused.insert(file).second)
