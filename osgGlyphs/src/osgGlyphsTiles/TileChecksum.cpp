@@ -132,7 +132,10 @@ osgDB::ReaderWriter::ReadResult TileCheckingReadCallback::readNode(const std::st
     {
         // The tile's own PagedLODs read their children through this callback too.
         if (options && options->getReadFileCallback() == this)
-            setTileDatabaseOptions(*result.getNode(), options->cloneOptions());
+        {
+            osg::ref_ptr<osgDB::Options> inherited = options->cloneOptions();
+            setTileDatabaseOptions(*result.getNode(), inherited.get());
+        }
         return result;
     }
     {
