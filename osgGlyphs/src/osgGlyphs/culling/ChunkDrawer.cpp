@@ -213,9 +213,13 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
     size_t begin = 0;
     // The first round lays down the cloud's front over the view.
     const size_t cover = putScreenCoverFirst(inView, int(viewport->width()), int(viewport->height()));
+    // A cloud drawn after others (a tile of a paged dataset) is tested from its first round on,
+    // against the nearer clouds' depth: its other chunks are one round, since read-backs of its
+    // own few layers cost more than they cull.
     std::vector<size_t> roundEnds = {cover};
     for (double end : ROUND_ENDS)
-        roundEnds.push_back(cover + size_t(std::ceil(end * double(inView.size() - cover))));
+        if (!drawnBefore || end == 1.0)
+            roundEnds.push_back(cover + size_t(std::ceil(end * double(inView.size() - cover))));
     for (size_t end : roundEnds)
     {
         if (begin >= inView.size())
