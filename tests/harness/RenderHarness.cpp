@@ -2,6 +2,8 @@
 
 #include <osgGlyphsHeadless/DepthImage>
 
+#include <OpenThreads/Thread>
+#include <osgDB/DatabasePager>
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
 #include <osgDB/WriteFile>
@@ -195,6 +197,27 @@ Frame Renderer::capture() const
     frame.view = _viewer->getFrameCapture()->getViewMatrix();
     frame.projection = _viewer->getFrameCapture()->getProjectionMatrix();
     return frame;
+}
+
+Frame renderPaged(Renderer& renderer, osg::Node* scene, int& frames, std::vector<Frame>* during)
+{
+    osgViewer::Viewer* viewer = renderer.getViewer();
+    viewer->setSceneData(scene);
+    osgDB::DatabasePager* pager = viewer->getDatabasePager();
+    frames = 0;
+    do
+    {
+        viewer->frame();
+        ++frames;
+        if (during)
+            during->push_back(renderer.capture());
+        if (pager->getDataToMergeListSize() == 0)
+            OpenThreads::Thread::microSleep(2000);
+    } while ((pager->getRequestsInProgress() || pager->getFileRequestListSize() > 0 ||
+              pager->getDataToMergeListSize() > 0) &&
+             frames < 2000);
+    viewer->frame(); // what the last merge brought in
+    return renderer.capture();
 }
 
 std::string outputPath(const std::string& fileName)

@@ -17,6 +17,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace osgGlyphsTest
 {
@@ -64,6 +65,10 @@ public:
 private:
     osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> _viewer;
 };
+
+/** Renders the scene, paged (a tile archive's root), until the viewer's DatabasePager has nothing
+ * left to load, then once more; frames: how many it took; during: the frames until then. */
+Frame renderPaged(Renderer& renderer, osg::Node* scene, int& frames, std::vector<Frame>* during = nullptr);
 
 /** Tolerances for a baseline comparison. A pixel differs when one colour channel differs by
  * more than colorChannel, or its depth by more than depth; the check fails when more than

@@ -52,28 +52,6 @@ osgGlyphsTiles::TileOptions smallTiles()
     return options;
 }
 
-/** Renders frames until the pager has nothing left to do; frames: how many it took. */
-Frame renderPaged(Renderer& renderer, osg::Node* scene, int& frames, std::vector<Frame>* during = nullptr)
-{
-    osgViewer::Viewer* viewer = renderer.getViewer();
-    viewer->setSceneData(scene);
-    osgDB::DatabasePager* pager = viewer->getDatabasePager();
-    frames = 0;
-    do
-    {
-        viewer->frame();
-        ++frames;
-        if (during)
-            during->push_back(renderer.capture());
-        if (pager->getDataToMergeListSize() == 0)
-            OpenThreads::Thread::microSleep(2000);
-    } while ((pager->getRequestsInProgress() || pager->getFileRequestListSize() > 0 ||
-              pager->getDataToMergeListSize() > 0) &&
-             frames < 2000);
-    viewer->frame(); // what the last merge brought in
-    return renderer.capture();
-}
-
 int countDifferences(const Frame& a, const Frame& b)
 {
     int differing = 0;

@@ -31,6 +31,19 @@ private:
     osgDB::Options* _options;
 };
 
+/** Computes the bound of every node it visits that the last change left dirty. */
+class BoundComputer : public osg::NodeVisitor
+{
+public:
+    BoundComputer() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+
+    void apply(osg::Node& node) override
+    {
+        node.getBound();
+        traverse(node);
+    }
+};
+
 }
 
 void osgGlyphsTiles::setTileDatabaseOptions(osg::Node& node, osgDB::Options* options)
@@ -41,6 +54,7 @@ void osgGlyphsTiles::setTileDatabaseOptions(osg::Node& node, osgDB::Options* opt
 
 TileRoot::TileRoot() : _budget(new TileBudget), _checking(new TileCheckingReadCallback)
 {
+    setNumChildrenRequiringUpdateTraversal(getNumChildrenRequiringUpdateTraversal() + 1);
     const osgDB::Options* registryOptions = osgDB::Registry::instance()->getOptions();
     _databaseOptions = registryOptions ? registryOptions->cloneOptions() : new osgDB::Options;
     _databaseOptions->setReadFileCallback(_checking.get());
@@ -50,6 +64,7 @@ TileRoot::TileRoot(const TileRoot& other, const osg::CopyOp& copyop)
     : osg::Group(other, copyop), _budget(new TileBudget(other.getGlyphBudget())), _checking(other._checking),
       _databaseOptions(other._databaseOptions)
 {
+    setNumChildrenRequiringUpdateTraversal(getNumChildrenRequiringUpdateTraversal() + 1);
 }
 
 void TileRoot::setGlyphBudget(std::size_t maxGlyphs)
@@ -83,6 +98,14 @@ bool TileRoot::setChild(unsigned int index, osg::Node* child)
 
 void TileRoot::traverse(osg::NodeVisitor& nv)
 {
+    if (nv.getVisitorType() == osg::NodeVisitor::UPDATE_VISITOR)
+    {
+        // The DatabasePager merged and expired tiles just before: their parents' bounds are dirty,
+        // and the PagedLODs' user-defined centres keep getBound() from reaching below them. Cull
+        // threads of several cameras would compute them together.
+        BoundComputer bounds;
+        osg::Group::traverse(bounds);
+    }
     osgUtil::CullVisitor* cv = nv.asCullVisitor();
     if (!cv || getGlyphBudget() == 0)
     {

@@ -307,12 +307,25 @@ static bool writeCulling(osgDB::OutputStream& os, const GlyphCloud& cloud)
     return true;
 }
 
+/** Computes a cloud's bounds once it is read. Nothing else may before cull threads share it: the
+ * PagedLODs of a tile archive have user-defined centres, so neither osgDB's DatabasePager nor a
+ * viewer's home position computes the bounds of the clouds below them, and the cull threads of
+ * two cameras would compute them together. */
+struct ComputeBoundsOnRead : public osgDB::FinishedObjectReadCallback
+{
+    void objectRead(osgDB::InputStream&, osg::Object& object) override
+    {
+        static_cast<GlyphCloud&>(object).getBoundingBox();
+    }
+};
+
 // osg::Geometry is left out of the chain: its arrays and primitive sets are derived from the
 // cloud's own, which are written here. The technique is an object with a wrapper of its own
 // (Techniques.cpp; osgdb_serializers_osgglyphspaper for the paper's).
 REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyphs::GlyphCloud,
                         "osg::Object osg::Node osg::Drawable osgGlyphs::GlyphCloud")
 {
+    wrapper->addFinishedObjectReadCallback(new ComputeBoundsOnRead);
     ADD_USER_SERIALIZER(Shape);
     // The single colour comes before the arrays: setting it later would drop per-glyph colours.
     ADD_VEC4_SERIALIZER(Color, osg::Vec4(0.8f, 0.8f, 0.8f, 1.0f));
