@@ -105,6 +105,7 @@ void TileRoot::traverse(osg::NodeVisitor& nv)
         // threads of several cameras would compute them together.
         BoundComputer bounds;
         osg::Group::traverse(bounds);
+        getBound();
     }
     osgUtil::CullVisitor* cv = nv.asCullVisitor();
     if (!cv || getGlyphBudget() == 0)
