@@ -32,10 +32,75 @@ uniform vec4 osgGlyphs_highlight;
 layout(depth_greater) out float gl_FragDepth;
 #endif
 
-/** The spans of the ray (eye space, unit direction) inside the glyph's convex parts; returns how
- * many. */
-int glyphSpans(vec3 origin, vec3 direction, out Span spans[2])
+/** Moves t and normal to the first drawn point of the span where that is nearer than t. The span
+ * is cut at the near plane (t = 0: the cut faces the viewer) and by the clip planes that are on:
+ * a cut shows as a cap facing the viewer where OSGGLYPHS_CLIP_CAPS is defined, else the solid's
+ * far side shows from within. */
+void keepNearerDrawnPoint(vec3 origin, vec3 direction, Span span, inout float t, inout vec3 normal)
 {
+    float first = span.tEnter;
+    vec3 firstNormal = span.nEnter;
+    if (first < 0.0)
+    {
+        first = 0.0;
+        firstNormal = -direction;
+    }
+    float last = span.tLeave;
+    bool entryCut = false, exitCut = false;
+#ifdef OSGGLYPHS_CLIP_PLANES
+    // Up to the highest plane that is on: a software rasteriser runs every branch it meets.
+    for (int i = 0; i < MAX_CLIP_PLANES && (osgGlyphs_clipPlanes >> i) != 0; ++i)
+    {
+        if (!isClipPlaneOn(i))
+            continue;
+        vec4 plane = gl_ClipPlane[i];
+        float atOrigin = dot(plane, vec4(origin, 1.0));
+        float rate = dot(plane.xyz, direction);
+        if (rate == 0.0)
+        {
+            if (atOrigin < 0.0)
+                return;
+            continue;
+        }
+        float crossing = -atOrigin / rate;
+        if (rate > 0.0 && crossing > first)
+        {
+            first = crossing;
+            firstNormal = -normalize(plane.xyz);
+            entryCut = true;
+        }
+        else if (rate < 0.0 && crossing < last)
+        {
+            last = crossing;
+            exitCut = true;
+        }
+    }
+#endif
+    if (first > last)
+        return;
+#ifndef OSGGLYPHS_CLIP_CAPS
+    if (entryCut)
+    {
+        if (exitCut)
+            return;
+        first = span.tLeave;
+        firstNormal = -span.nLeave;
+    }
+#endif
+    if (first < t)
+    {
+        t = first;
+        normal = firstNormal;
+    }
+}
+
+/** The nearest point drawn along the ray (eye space, unit direction, from the near plane) and its
+ * unit normal, or false. The glyph's convex parts are spans of the ray, held in variables of
+ * their own: arrays indexed in loops cost a software rasteriser memory traffic per fragment. */
+bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
+{
+    t = INFINITE_DISTANCE;
+    normal = -direction;
 #ifdef OSGGLYPHS_VECTOR_SHAPE
     vec3 axis = fragAxis.xyz;
     vec3 u, v;
@@ -47,94 +112,30 @@ int glyphSpans(vec3 origin, vec3 direction, out Span spans[2])
     relative += direction * start;
     vec3 o = vec3(dot(relative, u), dot(relative, v), dot(relative, axis));
     vec3 d = vec3(dot(direction, u), dot(direction, v), dot(direction, axis));
-    int count = shapeSpans(o, d, fragSphere.w, fragAxis.w, spans);
+    Span first, second;
+    int count = shapeSpans(o, d, fragSphere.w, fragAxis.w, first, second);
     mat3 toEye = mat3(u, v, axis);
-    for (int i = 0; i < count; ++i)
-        spans[i] = Span(spans[i].tEnter + start, spans[i].tLeave + start, toEye * spans[i].nEnter,
-                        toEye * spans[i].nLeave);
-    return count;
+    if (count > 0)
+        keepNearerDrawnPoint(origin, direction,
+                             Span(first.tEnter + start, first.tLeave + start, toEye * first.nEnter,
+                                  toEye * first.nLeave),
+                             t, normal);
+    if (count > 1)
+        keepNearerDrawnPoint(origin, direction,
+                             Span(second.tEnter + start, second.tLeave + start, toEye * second.nEnter,
+                                  toEye * second.nLeave),
+                             t, normal);
 #else
     float tEnter, tLeave;
-    if (!intersectSphere(origin, direction, fragSphere, tEnter, tLeave))
-        return 0;
-    vec3 centre = fragSphere.xyz;
-    spans[0] = Span(tEnter, tLeave, (origin + direction * tEnter - centre) / fragSphere.w,
-                    (origin + direction * tLeave - centre) / fragSphere.w);
-    return 1;
-#endif
-}
-
-/** The first point of a span that is drawn: its distance and the unit normal it is shaded with;
- * false where the span shows nothing. The span is cut at the near plane (t = 0: the cut faces the
- * viewer) and by the clip planes that are on: a cut shows as a cap facing the viewer where
- * OSGGLYPHS_CLIP_CAPS is defined, else the solid's far side shows from within. */
-bool firstDrawnPoint(vec3 origin, vec3 direction, Span span, out float t, out vec3 normal)
-{
-    t = span.tEnter;
-    normal = span.nEnter;
-    if (t < 0.0)
+    if (intersectSphere(origin, direction, fragSphere, tEnter, tLeave))
     {
-        t = 0.0;
-        normal = -direction;
-    }
-    float last = span.tLeave;
-    bool entryCut = false, exitCut = false;
-    for (int i = 0; i < MAX_CLIP_PLANES; ++i)
-    {
-        if (!isClipPlaneOn(i))
-            continue;
-        vec4 plane = gl_ClipPlane[i];
-        float atOrigin = dot(plane, vec4(origin, 1.0));
-        float rate = dot(plane.xyz, direction);
-        if (rate == 0.0)
-        {
-            if (atOrigin < 0.0)
-                return false;
-            continue;
-        }
-        float crossing = -atOrigin / rate;
-        if (rate > 0.0 && crossing > t)
-        {
-            t = crossing;
-            normal = -normalize(plane.xyz);
-            entryCut = true;
-        }
-        else if (rate < 0.0 && crossing < last)
-        {
-            last = crossing;
-            exitCut = true;
-        }
-    }
-    if (t > last)
-        return false;
-#ifndef OSGGLYPHS_CLIP_CAPS
-    if (entryCut)
-    {
-        if (exitCut)
-            return false;
-        t = span.tLeave;
-        normal = -span.nLeave;
+        vec3 centre = fragSphere.xyz;
+        keepNearerDrawnPoint(origin, direction,
+                             Span(tEnter, tLeave, (origin + direction * tEnter - centre) / fragSphere.w,
+                                  (origin + direction * tLeave - centre) / fragSphere.w),
+                             t, normal);
     }
 #endif
-    return true;
-}
-
-/** The nearest point drawn along the ray (t from the near plane) and its unit normal, or false. */
-bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
-{
-    Span spans[2];
-    int count = glyphSpans(origin, direction, spans);
-    t = INFINITE_DISTANCE;
-    for (int i = 0; i < count; ++i)
-    {
-        float tSpan;
-        vec3 nSpan;
-        if (firstDrawnPoint(origin, direction, spans[i], tSpan, nSpan) && tSpan < t)
-        {
-            t = tSpan;
-            normal = nSpan;
-        }
-    }
     return t < INFINITE_DISTANCE;
 }
 
@@ -142,8 +143,12 @@ bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
 void rayUnderFragment(out vec3 origin, out vec3 direction)
 {
     vec2 ndc = (gl_FragCoord.xy - osgGlyphs_viewport.xy) / osgGlyphs_viewport.zw * 2.0 - 1.0;
-    origin = unprojectNdc(vec3(ndc, -1.0));
-    direction = normalize(unprojectNdc(vec3(ndc, 1.0)) - origin);
+    // unprojectNdc at NDC z = -1 and z = 1, sharing the product of x and y.
+    vec4 middle = gl_ProjectionMatrixInverse * vec4(ndc, 0.0, 1.0);
+    vec4 nearPoint = middle - gl_ProjectionMatrixInverse[2];
+    vec4 farPoint = middle + gl_ProjectionMatrixInverse[2];
+    origin = nearPoint.xyz / nearPoint.w;
+    direction = normalize(farPoint.xyz / farPoint.w - origin);
 }
 
 void main()

@@ -180,30 +180,32 @@ bool frustumSpan(vec3 o, vec3 d, float z0, float r0, float z1, float r1, out Spa
     return span.tEnter <= span.tLeave;
 }
 
-/** The spans of the ray inside the shape's convex parts; returns how many. An arrow's shaft and
- * head make one span where the ray goes from one into the other. */
-int shapeSpans(vec3 o, vec3 d, float radius, float len, out Span spans[2])
+/** The spans of the ray inside the shape's convex parts; returns how many (first, then second).
+ * An arrow's shaft and head make one span where the ray goes from one into the other. */
+int shapeSpans(vec3 o, vec3 d, float radius, float len, out Span first, out Span second)
 {
+    second = Span(INFINITE_DISTANCE, -INFINITE_DISTANCE, vec3(0.0), vec3(0.0));
 #if defined(OSGGLYPHS_SHAPE_CYLINDER)
-    return frustumSpan(o, d, 0.0, radius, len, radius, spans[0]) ? 1 : 0;
+    return frustumSpan(o, d, 0.0, radius, len, radius, first) ? 1 : 0;
 #elif defined(OSGGLYPHS_SHAPE_CONE)
-    return frustumSpan(o, d, 0.0, radius, len, 0.0, spans[0]) ? 1 : 0;
+    return frustumSpan(o, d, 0.0, radius, len, 0.0, first) ? 1 : 0;
 #else
     float headStart = len * (1.0 - osgGlyphs_arrowParams.x);
-    int count = 0;
-    Span span;
-    if (frustumSpan(o, d, 0.0, radius, headStart, radius, span))
-        spans[count++] = span;
-    if (frustumSpan(o, d, headStart, radius * osgGlyphs_arrowParams.y, len, 0.0, span))
-        spans[count++] = span;
-    if (count == 2 && max(spans[0].tEnter, spans[1].tEnter) <= min(spans[0].tLeave, spans[1].tLeave))
+    Span shaft, head;
+    bool hitsShaft = frustumSpan(o, d, 0.0, radius, headStart, radius, shaft);
+    bool hitsHead = frustumSpan(o, d, headStart, radius * osgGlyphs_arrowParams.y, len, 0.0, head);
+    first = hitsShaft ? shaft : head;
+    if (!hitsShaft || !hitsHead)
+        return hitsShaft || hitsHead ? 1 : 0;
+    if (max(shaft.tEnter, head.tEnter) <= min(shaft.tLeave, head.tLeave))
     {
-        int first = spans[0].tEnter <= spans[1].tEnter ? 0 : 1;
-        int last = spans[0].tLeave >= spans[1].tLeave ? 0 : 1;
-        spans[0] = Span(spans[first].tEnter, spans[last].tLeave, spans[first].nEnter, spans[last].nLeave);
-        count = 1;
+        bool shaftFirst = shaft.tEnter <= head.tEnter, shaftLast = shaft.tLeave >= head.tLeave;
+        first = Span(shaftFirst ? shaft.tEnter : head.tEnter, shaftLast ? shaft.tLeave : head.tLeave,
+                     shaftFirst ? shaft.nEnter : head.nEnter, shaftLast ? shaft.nLeave : head.nLeave);
+        return 1;
     }
-    return count;
+    second = head;
+    return 2;
 #endif
 }
 

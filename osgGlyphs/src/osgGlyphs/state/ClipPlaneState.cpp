@@ -1,4 +1,5 @@
 #include "ClipPlaneState.h"
+#include "GlyphDefines.h"
 
 #include <osg/Uniform>
 #include <osgUtil/StateGraph>
@@ -46,6 +47,8 @@ osg::StateSet* osgGlyphs::detail::getClipPlaneStateSet(unsigned int mask)
             all[m] = new osg::StateSet;
             all[m]->setName("osgGlyphs clip planes");
             all[m]->addUniform(new osg::Uniform("osgGlyphs_clipPlanes", static_cast<int>(m)));
+            if (m != 0)
+                all[m]->setDefine(CLIP_PLANES_DEFINE);
         }
         return all;
     }();

@@ -18,7 +18,8 @@ const unsigned int MAX_GLYPH_CLIP_PLANES = 8;
  * them (OVERRIDE and PROTECTED included), turn GL_CLIP_PLANE0 + i on. */
 unsigned int getClipPlaneMask(osgUtil::CullVisitor& cv);
 
-/** A shared StateSet that gives the glyph programs that mask (osgGlyphs_clipPlanes). */
+/** A shared StateSet that gives the glyph programs that mask (osgGlyphs_clipPlanes), and the
+ * OSGGLYPHS_CLIP_PLANES define where it is not 0. */
 osg::StateSet* getClipPlaneStateSet(unsigned int mask);
 
 }

@@ -12,6 +12,7 @@ const char* const osgGlyphs::detail::FLOAT_ATTRIBUTES_DEFINE = "OSGGLYPHS_FLOAT_
 const char* const osgGlyphs::detail::COLOR_RGBA_DEFINE = "OSGGLYPHS_COLOR_RGBA";
 const char* const osgGlyphs::detail::VECTOR_SHAPE_DEFINE = "OSGGLYPHS_VECTOR_SHAPE";
 const char* const osgGlyphs::detail::COMPRESSED_POSITIONS_DEFINE = "OSGGLYPHS_COMPRESSED_POSITIONS";
+const char* const osgGlyphs::detail::CLIP_PLANES_DEFINE = "OSGGLYPHS_CLIP_PLANES";
 
 namespace
 {
@@ -50,6 +51,7 @@ std::string osgGlyphs::detail::generateDefinesGlsl()
     all.push_back(GLYPH_LIT_DEFINE);
     all.push_back(FLOAT_ATTRIBUTES_DEFINE);
     all.push_back(COMPRESSED_POSITIONS_DEFINE);
+    all.push_back(CLIP_PLANES_DEFINE);
     all.push_back(GLYPH_CLIP_CAPS_DEFINE);
     all.push_back(GLYPH_SHADOWS_DEFINE);
     all.push_back(GLYPH_AMBIENT_OCCLUSION_DEFINE);

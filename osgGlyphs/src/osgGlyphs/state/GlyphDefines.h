@@ -19,6 +19,8 @@ extern const char* const COLOR_RGBA_DEFINE;
 extern const char* const VECTOR_SHAPE_DEFINE;
 /** Set by a cloud (not a variant) whose positions are 16-bit integers on a grid. */
 extern const char* const COMPRESSED_POSITIONS_DEFINE;
+/** Set by the cull traversal (not a variant) where any of OSG's clip planes is on. */
+extern const char* const CLIP_PLANES_DEFINE;
 
 /** The defines of a variant, as its StateSet sets them. */
 std::vector<std::string> getVariantDefines(const GlyphVariant& variant);
