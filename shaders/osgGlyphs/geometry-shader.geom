@@ -12,7 +12,7 @@ layout(triangle_strip, max_vertices = 4) out;
 
 #include "bound.glsl"
 
-const float SMALL_GLYPH_PIXELS = 8.0;
+const float SMALL_GLYPH_PIXELS = 3.0;
 
 in GlyphVertex
 {
