@@ -20,10 +20,7 @@ namespace
 
 std::vector<unsigned int> orderOf(const GlyphChunks& chunks)
 {
-    std::vector<unsigned int> ids(chunks.order->getNumIndices());
-    for (unsigned int k = 0; k < ids.size(); ++k)
-        ids[k] = chunks.order->index(k);
-    return ids;
+    return chunks.ids;
 }
 
 }
@@ -125,26 +122,39 @@ TEST(GlyphChunks, BoxesBeyondTheRangeOfAFloatAreOrderedToo)
     EXPECT_EQ(ids, (std::multiset<unsigned int>{0, 1, 2, 3}));
 }
 
-// Up to 65,536 glyphs the order takes 16 bits per glyph on the GPU; above, 32.
-TEST(GlyphChunks, SmallCloudsOrderTheirGlyphsWith16BitIndices)
+// Glyphs already in spatial order are drawn from the caller's arrays (no copy); any other order,
+// or a glyph left out, is not the identity.
+TEST(GlyphChunks, GlyphsInSpatialOrderAreTheIdentity)
 {
-    for (unsigned int count : {65536u, 65537u})
+    // A 16^3 lattice listed in Morton order, then the same listed row by row.
+    auto mortonCell = [](unsigned int i)
     {
-        const GlyphChunks chunks = buildGlyphChunks(
-            count,
-            [&](unsigned int i)
-            {
-                const osg::Vec3 centre(float(i % 64), float(i / 64 % 64), float(i / 4096));
-                return osg::BoundingBox(centre - osg::Vec3(0.4f, 0.4f, 0.4f),
-                                        centre + osg::Vec3(0.4f, 0.4f, 0.4f));
-            },
-            512);
-        EXPECT_EQ(chunks.order->getDataType(), GLenum(count <= 65536u ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT));
-        const std::vector<unsigned int> order = orderOf(chunks);
-        const std::set<unsigned int> ids(order.begin(), order.end());
-        ASSERT_EQ(ids.size(), count);
-        EXPECT_EQ(*ids.rbegin(), count - 1); // the largest id survives the narrower type
-    }
+        unsigned int x = 0, y = 0, z = 0;
+        for (unsigned int bit = 0; bit < 4; ++bit)
+        {
+            x |= ((i >> (3 * bit)) & 1u) << bit;
+            y |= ((i >> (3 * bit + 1)) & 1u) << bit;
+            z |= ((i >> (3 * bit + 2)) & 1u) << bit;
+        }
+        return osg::Vec3(float(x), float(y), float(z));
+    };
+    auto rowCell = [](unsigned int i)
+    { return osg::Vec3(float(i % 16), float(i / 16 % 16), float(i / 256)); };
+    auto boxes = [](auto cell)
+    {
+        return [cell](unsigned int i) {
+            return osg::BoundingBox(cell(i) - osg::Vec3(0.4f, 0.4f, 0.4f),
+                                    cell(i) + osg::Vec3(0.4f, 0.4f, 0.4f));
+        };
+    };
+    const GlyphChunks inOrder = buildGlyphChunks(4096, boxes(mortonCell), 64);
+    EXPECT_TRUE(inOrder.isIdentity(4096));
+    EXPECT_FALSE(inOrder.isIdentity(4097));
+    const GlyphChunks byRows = buildGlyphChunks(4096, boxes(rowCell), 64);
+    EXPECT_FALSE(byRows.isIdentity(4096));
+    const GlyphChunks oneLeftOut = buildGlyphChunks(
+        4096, [&](unsigned int i) { return i == 4095 ? osg::BoundingBox() : boxes(mortonCell)(i); }, 64);
+    EXPECT_FALSE(oneLeftOut.isIdentity(4096));
 }
 
 namespace

@@ -157,15 +157,73 @@ TEST_F(GlyphCloudData, UpdatesRepackAndReuploadOnlyWhatChanged)
     EXPECT_NEAR(cloud->getBoundingBox().zMax(), 1.5f + 0.8f, 1e-3f);
 }
 
+// A culling cloud whose glyphs are not listed in spatial order draws copies of its arrays in that
+// order: gathered right, refilled after an edit of only what was edited, and dropped when it stops
+// culling; each glyph keeps its colour.
+TEST_F(GlyphCloudData, CulledCloudsDrawCopiesInSpatialOrder)
+{
+    osg::ref_ptr<GlyphCloud> cloud = createScalarRow({0.0f, 1.0f, 2.0f});
+    osg::Vec3Array& positions = *cloud->getPositions();
+    std::reverse(positions.begin(), positions.end()); // glyph 0 at the right end
+    positions.dirty();
+    cloud->dirtyGlyphs();
+    osg::ref_ptr<osg::Node> scene = group({cloud.get()});
+    const ColorMap* viridis = ColorMap::getBuiltin("viridis");
+
+    const osgGlyphs::GlyphArrays source = cloud->getGlyphArrays(), drawn = cloud->getDrawnArrays();
+    ASSERT_NE(drawn.positions, source.positions);
+    ASSERT_EQ(drawn.count, 3u);
+    const auto& drawnPositions = static_cast<const osg::Vec3Array&>(*drawn.positions);
+    const auto& drawnPacked = static_cast<const osg::UIntArray&>(*drawn.radiusScalar);
+    const auto& packed = static_cast<const osg::UIntArray&>(*source.radiusScalar);
+    for (unsigned int k = 0; k < 3; ++k)
+    {
+        EXPECT_EQ(drawnPositions[k], positions[2 - k]) << k;
+        EXPECT_EQ(drawnPacked[k], packed[2 - k]) << k;
+    }
+    std::vector<osg::Vec4ub> colours = centreColours(renderer.render(scene.get()), *cloud);
+    for (unsigned int i = 0; i < 3; ++i)
+        EXPECT_EQ(labelOfColor(colours[i], {toBytes(viridis->getColor(i / 2.0f))}, 2), 0) << i;
+
+    const unsigned int positionsCount = drawn.positions->getModifiedCount();
+    const unsigned int packedCount = drawn.radiusScalar->getModifiedCount();
+    (*cloud->getScalars())[0] = 2.0f;
+    (*cloud->getScalars())[2] = 0.0f;
+    cloud->getScalars()->dirty();
+    cloud->dirtyGlyphs();
+    EXPECT_EQ(cloud->getDrawnArrays().radiusScalar, drawn.radiusScalar) << "refilled, not replaced";
+    EXPECT_GT(drawn.radiusScalar->getModifiedCount(), packedCount);
+    EXPECT_EQ(drawn.positions->getModifiedCount(), positionsCount);
+    colours = centreColours(renderer.render(scene.get()), *cloud);
+    EXPECT_EQ(labelOfColor(colours[0], {toBytes(viridis->getColor(1.0f))}, 2), 0);
+    EXPECT_EQ(labelOfColor(colours[2], {toBytes(viridis->getColor(0.0f))}, 2), 0);
+
+    cloud->setCulling(osgGlyphs::GlyphCulling::Off);
+    EXPECT_EQ(cloud->getDrawnArrays().positions, source.positions);
+    EXPECT_EQ(cloud->getVertexArray(), source.positions);
+}
+
 TEST_F(GlyphCloudData, GPUFootprintPerGlyph)
 {
+    for (bool reversed : {false, true})
+    {
+        // Culled, the glyphs are drawn in ranges of arrays in spatial order: the caller's, or
+        // copies in that order (reversed), in place of them; no index buffer.
+        std::vector<float> values = {0.0f, 1.0f, 2.0f, 3.0f};
+        if (reversed)
+            std::reverse(values.begin(), values.end());
+        osg::ref_ptr<GlyphCloud> cloud = createScalarRow(values);
+        if (reversed)
+            std::reverse(cloud->getPositions()->begin(), cloud->getPositions()->end());
+        cloud->dirtyGlyphs();
+        cloud->setRadii(makeArray<osg::FloatArray>({0.5f, 0.6f, 0.7f, 0.8f}));
+        EXPECT_EQ(cloud->getDrawnArrays().positions != cloud->getGlyphArrays().positions, reversed);
+        EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 16.0) << "position + radius + scalar";
+        cloud->setCompressedPositions(true);
+        EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 10.0) << "16-bit position + radius + scalar";
+        cloud->setCompressedPositions(false);
+    }
     osg::ref_ptr<GlyphCloud> cloud = createScalarRow({0.0f, 1.0f, 2.0f, 3.0f});
-    cloud->setRadii(makeArray<osg::FloatArray>({0.5f, 0.6f, 0.7f, 0.8f}));
-    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 18.0)
-        << "position + radius + scalar + the spatial order's 16-bit index";
-    cloud->setCompressedPositions(true);
-    EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 12.0) << "16-bit position + radius + scalar + index";
-    cloud->setCompressedPositions(false);
     cloud->setCulling(osgGlyphs::GlyphCulling::Off);
     EXPECT_EQ(cloud->getGPUBytesPerGlyph(), 16.0) << "position + radius + scalar";
     cloud->setColors(makeArray<osg::Vec4ubArray>({osg::Vec4ub(1, 2, 3, 4), osg::Vec4ub(1, 2, 3, 4),

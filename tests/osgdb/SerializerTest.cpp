@@ -291,7 +291,9 @@ TEST_P(NativeFormats, CompressedPositionsRoundTripAsTheirGridPoints)
         EXPECT_GT(covered, 1000) << path;
     }
     if (GetParam() == "osgb")
+    {
         EXPECT_LE(bytes[true] + 2000 * 6, bytes[false] + 256) << "6 bytes less per glyph, and the grid";
+    }
 }
 
 // Scalars that are the values of their 16-bit steps (as tiles store them) are written as the steps,
@@ -324,7 +326,9 @@ TEST_P(NativeFormats, ScalarsOnTheirStepsRoundTripIn16Bits)
         EXPECT_EQ(copy->getColorMode(), osgGlyphs::GlyphColorMode::Scalar);
     }
     if (GetParam() == "osgb")
+    {
         EXPECT_LE(bytes[true] + 3000 * 2, bytes[false] + 64) << "2 bytes less per glyph";
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(, NativeFormats, ::testing::Values("osgt", "osgb", "osgx"),

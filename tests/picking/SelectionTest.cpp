@@ -22,12 +22,15 @@ namespace
 
 const int SIZE = 120;
 
-osg::ref_ptr<GlyphCloud> createCloud(GlyphShape shape)
+/** Six glyphs in two rows; listed in spatial order, or in reverse, which a culling cloud draws
+ * from copies of its arrays in spatial order. */
+osg::ref_ptr<GlyphCloud> createCloud(GlyphShape shape, bool reversed)
 {
     osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array, vectors = new osg::Vec3Array;
     osg::ref_ptr<osg::Vec4ubArray> colors = new osg::Vec4ubArray;
-    for (int i = 0; i < 6; ++i)
+    for (int k = 0; k < 6; ++k)
     {
+        const int i = reversed ? 5 - k : k;
         positions->push_back(
             osg::Vec3(float(i % 3) * 2.2f - 2.2f, float(i) * 0.3f, float(i / 3) * 2.2f - 1.1f));
         vectors->push_back(osg::Vec3(0.3f, 0.2f, 1.0f));
@@ -105,37 +108,42 @@ TEST(Selection, TintsExactlyTheSelectedGlyphs)
     for (GlyphShape shape : {GlyphShape::Sphere, GlyphShape::Arrow})
         for (GlyphCulling culling : {GlyphCulling::Off, GlyphCulling::Occlusion})
             for (bool pointSprites : {false, true})
-            {
-                SCOPED_TRACE(std::string(osgGlyphs::getShapeName(shape)) +
-                             (pointSprites ? " point sprites" : "") +
-                             (culling == GlyphCulling::Off ? " unculled" : " culled"));
-                osg::ref_ptr<GlyphCloud> cloud = createCloud(shape);
-                cloud->setCulling(culling);
-                if (pointSprites)
-                    cloud->setTechnique(new osgGlyphs::PointSpriteTechnique);
-                Renderer renderer(SIZE, SIZE);
-                renderer.setLookAt(osg::Vec3d(0.5, -12.0, 1.0), osg::Vec3d(0.0, 0.0, 0.0),
-                                   osg::Vec3d(0, 0, 1));
-                const Frame plain = renderer.render(cloud.get());
-                const std::vector<int> labels = glyphUnderEachPixel(renderer, *cloud);
+                for (bool reversed : {false, true})
+                {
+                    SCOPED_TRACE(std::string(osgGlyphs::getShapeName(shape)) +
+                                 (pointSprites ? " point sprites" : "") +
+                                 (culling == GlyphCulling::Off ? " unculled" : " culled") +
+                                 (reversed ? ", listed in reverse" : ""));
+                    osg::ref_ptr<GlyphCloud> cloud = createCloud(shape, reversed);
+                    cloud->setCulling(culling);
+                    if (pointSprites)
+                        cloud->setTechnique(new osgGlyphs::PointSpriteTechnique);
+                    const bool drawnFromCopies =
+                        cloud->getDrawnArrays().positions != cloud->getGlyphArrays().positions;
+                    EXPECT_EQ(drawnFromCopies, reversed && culling != GlyphCulling::Off);
+                    Renderer renderer(SIZE, SIZE);
+                    renderer.setLookAt(osg::Vec3d(0.5, -12.0, 1.0), osg::Vec3d(0.0, 0.0, 0.0),
+                                       osg::Vec3d(0, 0, 1));
+                    const Frame plain = renderer.render(cloud.get());
+                    const std::vector<int> labels = glyphUnderEachPixel(renderer, *cloud);
 
-                const osg::Array* packed = cloud->getGlyphArrays().radiusScalar;
-                const unsigned int packedCount = packed->getModifiedCount();
-                const unsigned int positionsCount = cloud->getPositions()->getModifiedCount();
-                const std::vector<unsigned int> selection = {1, 3, 4, 1000}; // 1000: no such glyph
-                cloud->setSelection(selection);
-                const Frame selected = renderer.render(cloud.get());
-                EXPECT_EQ(packed->getModifiedCount(), packedCount);
-                EXPECT_EQ(cloud->getPositions()->getModifiedCount(), positionsCount);
-                EXPECT_EQ(cloud->getGlyphArrays().radiusScalar, packed);
-                expectSelectionDrawn(plain, selected, labels, selection, cloud->getSelectionColor());
-                if (shape == GlyphShape::Sphere && culling == GlyphCulling::Occlusion && !pointSprites)
-                    saveFrame(selected, "selection_spheres");
+                    const osg::Array* packed = cloud->getGlyphArrays().radiusScalar;
+                    const unsigned int packedCount = packed->getModifiedCount();
+                    const unsigned int positionsCount = cloud->getPositions()->getModifiedCount();
+                    const std::vector<unsigned int> selection = {1, 3, 4, 1000}; // 1000: no such glyph
+                    cloud->setSelection(selection);
+                    const Frame selected = renderer.render(cloud.get());
+                    EXPECT_EQ(packed->getModifiedCount(), packedCount);
+                    EXPECT_EQ(cloud->getPositions()->getModifiedCount(), positionsCount);
+                    EXPECT_EQ(cloud->getGlyphArrays().radiusScalar, packed);
+                    expectSelectionDrawn(plain, selected, labels, selection, cloud->getSelectionColor());
+                    if (shape == GlyphShape::Sphere && culling == GlyphCulling::Occlusion && !pointSprites)
+                        saveFrame(selected, "selection_spheres");
 
-                cloud->setSelection({});
-                const Frame cleared = renderer.render(cloud.get());
-                EXPECT_EQ(std::memcmp(cleared.color->data(), plain.color->data(),
-                                      cleared.color->getTotalSizeInBytes()),
-                          0);
-            }
+                    cloud->setSelection({});
+                    const Frame cleared = renderer.render(cloud.get());
+                    EXPECT_EQ(std::memcmp(cleared.color->data(), plain.color->data(),
+                                          cleared.color->getTotalSizeInBytes()),
+                              0);
+                }
 }

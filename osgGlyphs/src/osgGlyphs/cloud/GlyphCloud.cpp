@@ -5,6 +5,7 @@
 #include "../state/ClipPlaneState.h"
 #include "../state/GlyphDefines.h"
 #include "../state/ViewState.h"
+#include "DrawnArrays.h"
 #include "FlattenedTransforms.h"
 #include "PositionGrid.h"
 
@@ -63,6 +64,7 @@ void GlyphCloud::initialize()
     _packed->setPreserveDataType(true); // an integer attribute: glVertexAttribIPointer
     _unpacked = new osg::Vec2Array;
     _quantisedPositions = new osg::Vec3sArray;
+    _drawnArrays = std::make_shared<detail::DrawnArrays>();
     // The cloud's own values, in a StateSet of its own: each copy gets its own.
     _cloudStateSet = new osg::StateSet;
     _cloudStateSet->setName("osgGlyphs cloud");
@@ -378,9 +380,23 @@ void GlyphCloud::setSelection(const std::vector<unsigned int>& glyphs)
 void GlyphCloud::updateSelectionElements()
 {
     _selectionElements->clear();
-    for (unsigned int glyph : _selection)
-        if (glyph < _numGlyphs)
-            _selectionElements->push_back(glyph);
+    if (_drawnArrays->isReordered() && !_selection.empty())
+    {
+        // The drawn arrays hold the drawn glyphs in spatial order: where each glyph went.
+        const unsigned int NOT_DRAWN = ~0u;
+        std::vector<unsigned int> drawnAt(_numGlyphs, NOT_DRAWN);
+        for (unsigned int k = 0; k < _chunks->ids.size(); ++k)
+            drawnAt[_chunks->ids[k]] = k;
+        for (unsigned int glyph : _selection)
+            if (glyph < _numGlyphs && drawnAt[glyph] != NOT_DRAWN)
+                _selectionElements->push_back(drawnAt[glyph]);
+    }
+    else
+    {
+        for (unsigned int glyph : _selection)
+            if (glyph < _numGlyphs)
+                _selectionElements->push_back(glyph);
+    }
     _selectionElements->dirty();
 }
 
@@ -412,17 +428,25 @@ GlyphArrays GlyphCloud::getGlyphArrays() const
     arrays.vectors = hasVectorShape() ? _vectors.get() : nullptr;
     arrays.occlusion = _occlusion.valid() && _occlusion->size() >= _numGlyphs ? _occlusion.get() : nullptr;
     arrays.count = _numGlyphs;
-    arrays.order = _chunks ? _chunks->order.get() : nullptr;
     return arrays;
 }
 
 void GlyphCloud::buildPrimitives()
 {
     const GlyphTechnique* technique = getEffectiveTechnique();
-    const GlyphArrays arrays = getGlyphArrays();
-    const auto builtFor =
-        std::make_tuple(technique, arrays.positions, arrays.radiusScalar, arrays.colors, arrays.vectors,
-                        arrays.occlusion, arrays.count, static_cast<const osg::PrimitiveSet*>(arrays.order));
+    const bool wasReordered = _drawnArrays->isReordered();
+    if (_chunks)
+        _drawn = _drawnArrays->update(getGlyphArrays(), _chunks);
+    else
+    {
+        _drawnArrays->clear();
+        _drawn = getGlyphArrays();
+    }
+    if (_drawnArrays->isReordered() || wasReordered)
+        updateSelectionElements(); // the selection's pass draws from the drawn arrays
+    const GlyphArrays& arrays = _drawn;
+    const auto builtFor = std::make_tuple(technique, arrays.positions, arrays.radiusScalar, arrays.colors,
+                                          arrays.vectors, arrays.occlusion, arrays.count);
     for (const auto& [define, on] :
          {std::make_pair(GLYPH_AMBIENT_OCCLUSION_DEFINE, arrays.occlusion != nullptr),
           std::make_pair(detail::COMPRESSED_POSITIONS_DEFINE, _compressedPositions)})
@@ -455,7 +479,7 @@ double GlyphCloud::getGPUBytesPerGlyph() const
         bytes += array.valid() ? array->getTotalDataSize() : 0;
     for (const osg::ref_ptr<osg::PrimitiveSet>& primitives : getPrimitiveSetList())
         if (const osg::DrawElements* elements = primitives->getDrawElements())
-            bytes += elements->getTotalDataSize(); // the spatial order of a cloud that culls
+            bytes += elements->getTotalDataSize(); // a technique's indexed mesh
     return bytes / _numGlyphs;
 }
 
@@ -559,7 +583,7 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
     vas->setVertexBufferObjectSupported(usingVertexBufferObjects);
     drawVertexArraysImplementation(renderInfo);
     if (culling)
-        statistics = detail::drawChunks(renderInfo, *chunks, _culling, usingVertexBufferObjects);
+        statistics = detail::drawChunks(renderInfo, *chunks, _culling);
     else
     {
         statistics = GlyphCullingStatistics();

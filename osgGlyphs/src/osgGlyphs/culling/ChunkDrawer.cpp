@@ -114,59 +114,47 @@ void setGlyphTest(osg::State& state, int levels, const OcclusionContext* context
         ext->glUniform4iv(rectangles, levels, context->getAtlasLevels().data());
 }
 
-/** Draws chunks as one multi-draw of their index ranges, and lists of glyph ids. */
+/** Draws chunks as one multi-draw of their ranges of the drawn arrays; chunks that follow each
+ * other in the arrays as well as in the list make one range. */
 class RangeDrawer
 {
 public:
-    RangeDrawer(osg::State& state, const GlyphChunks& chunks, bool usingVertexBufferObjects)
-        : _state(state), _chunks(chunks), _usingVertexBufferObjects(usingVertexBufferObjects)
-    {
-    }
+    RangeDrawer(osg::State& state, const GlyphChunks& chunks) : _state(state), _chunks(chunks) {}
 
     unsigned int drawChunks(const std::vector<unsigned int>& chunkIndices)
     {
-        osg::DrawElements& order = *_chunks.order; // getDataType() is not const in OSG 3.6
-        const char* base = bind(order);
-        const size_t indexSize = order.getDataType() == GL_UNSIGNED_SHORT ? sizeof(GLushort) : sizeof(GLuint);
+        _firsts.clear();
         _counts.clear();
-        _offsets.clear();
         unsigned int glyphs = 0;
         for (unsigned int index : chunkIndices)
         {
             const GlyphChunk& chunk = _chunks.chunks[index];
-            _counts.push_back(GLsizei(chunk.count));
-            _offsets.push_back(base + size_t(chunk.first) * indexSize);
+            if (!_counts.empty() && GLint(chunk.first) == _firsts.back() + _counts.back())
+                _counts.back() += GLsizei(chunk.count);
+            else
+            {
+                _firsts.push_back(GLint(chunk.first));
+                _counts.push_back(GLsizei(chunk.count));
+            }
             glyphs += chunk.count;
         }
         if (!_counts.empty())
-            _state.get<osg::GLExtensions>()->glMultiDrawElements(
-                GL_POINTS, _counts.data(), order.getDataType(), _offsets.data(), GLsizei(_counts.size()));
+            _state.get<osg::GLExtensions>()->glMultiDrawArrays(GL_POINTS, _firsts.data(), _counts.data(),
+                                                               GLsizei(_counts.size()));
         return glyphs;
     }
 
 private:
-    /** Binds the indices' element buffer; the address of the first index to draw from. */
-    const char* bind(const osg::DrawElements& indices)
-    {
-        osg::GLBufferObject* ebo =
-            _usingVertexBufferObjects ? indices.getOrCreateGLBufferObject(_state.getContextID()) : nullptr;
-        if (!ebo)
-            return static_cast<const char*>(indices.getDataPointer());
-        _state.getCurrentVertexArrayState()->bindElementBufferObject(ebo);
-        return reinterpret_cast<const char*>(ebo->getOffset(indices.getBufferIndex()));
-    }
-
     osg::State& _state;
     const GlyphChunks& _chunks;
-    bool _usingVertexBufferObjects;
+    std::vector<GLint> _firsts;
     std::vector<GLsizei> _counts;
-    std::vector<const void*> _offsets;
 };
 
 }
 
 GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo, const GlyphChunks& chunks,
-                                                     GlyphCulling culling, bool usingVertexBufferObjects)
+                                                     GlyphCulling culling)
 {
     osg::State& state = *renderInfo.getState();
     GlyphCullingStatistics statistics;
@@ -192,7 +180,7 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
     std::sort(inView.begin(), inView.end(),
               [](const ChunkInView& a, const ChunkInView& b) { return a.nearest < b.nearest; });
 
-    RangeDrawer drawer(state, chunks, usingVertexBufferObjects);
+    RangeDrawer drawer(state, chunks);
     std::vector<unsigned int> round;
     if (!occlusion || inView.size() < MIN_CHUNKS_FOR_OCCLUSION)
     {

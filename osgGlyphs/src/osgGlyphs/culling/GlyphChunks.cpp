@@ -116,15 +116,12 @@ GlyphChunks osgGlyphs::detail::buildGlyphChunks(unsigned int numGlyphs,
     Splitter{keys, std::max(1u, maxChunkSize), result.chunks}.split(0, keys.size(), 0);
     const uint32_t NO_CHUNK = 0xffffffffu;
     std::vector<uint32_t> chunkOf(numGlyphs, NO_CHUNK);
-    if (numGlyphs <= 65536u)
-        result.order = new osg::DrawElementsUShort(GL_POINTS, keys.size());
-    else
-        result.order = new osg::DrawElementsUInt(GL_POINTS, keys.size());
+    result.ids.resize(keys.size());
     for (uint32_t c = 0; c < result.chunks.size(); ++c)
         for (size_t k = result.chunks[c].first; k < result.chunks[c].first + result.chunks[c].count; ++k)
         {
             const uint32_t id = uint32_t(keys[k] & 0xffffffffu);
-            result.order->setElement(static_cast<unsigned int>(k), id);
+            result.ids[k] = id;
             chunkOf[id] = c;
         }
     keys = std::vector<uint64_t>();
@@ -132,4 +129,14 @@ GlyphChunks osgGlyphs::detail::buildGlyphChunks(unsigned int numGlyphs,
         if (chunkOf[i] != NO_CHUNK)
             result.chunks[chunkOf[i]].box.expandBy(glyphBox(i));
     return result;
+}
+
+bool GlyphChunks::isIdentity(unsigned int numGlyphs) const
+{
+    if (ids.size() != numGlyphs)
+        return false;
+    for (unsigned int k = 0; k < numGlyphs; ++k)
+        if (ids[k] != k)
+            return false;
+    return true;
 }

@@ -4,7 +4,6 @@
 #define OSGGLYPHS_GLYPHCHUNKS_H 1
 
 #include <osg/BoundingBox>
-#include <osg/PrimitiveSet>
 
 #include <functional>
 #include <vector>
@@ -14,7 +13,8 @@ namespace osgGlyphs
 namespace detail
 {
 
-/** A run of the spatial order: glyphs order[first, first + count) and the box that holds them. */
+/** A run of the spatial order: the glyphs at positions [first, first + count) of the drawn
+ * arrays, and the box that holds them. */
 struct GlyphChunk
 {
     osg::BoundingBox box;
@@ -22,13 +22,16 @@ struct GlyphChunk
     unsigned int count = 0;
 };
 
-/** The glyphs that are drawn, in Morton order as GL_POINTS indices (the caller's glyph ids; 16-bit
- * for up to 65,536 glyphs), cut along the octree of that order into chunks of at most
- * maxChunkSize glyphs. */
+/** The glyphs that are drawn, in Morton order, cut along the octree of that order into chunks of
+ * at most maxChunkSize glyphs. ids[k] is the caller's id of the glyph the drawn arrays hold at
+ * position k. */
 struct GlyphChunks
 {
-    osg::ref_ptr<osg::DrawElements> order;
+    std::vector<unsigned int> ids;
     std::vector<GlyphChunk> chunks;
+
+    /** Whether every glyph is drawn, at its own index: the caller's arrays are the drawn ones. */
+    bool isIdentity(unsigned int numGlyphs) const;
 };
 
 /** Sorts the glyphs whose box is valid (the others are not drawn) by the Morton code of their

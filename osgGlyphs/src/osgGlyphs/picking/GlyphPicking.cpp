@@ -66,7 +66,7 @@ std::vector<GlyphRayHit> osgGlyphs::detail::castRayThroughChunks(const GlyphChun
         for (unsigned int k = chunk.first; k < chunk.first + chunk.count; ++k)
         {
             GlyphRayHit hit;
-            hit.glyph = chunks.order->index(k);
+            hit.glyph = chunks.ids[k];
             if (!solids(hit.glyph, solid) || !castRay(solid, origin, direction, hit.t, hit.normal) ||
                 hit.t > maxT)
                 continue;
@@ -105,7 +105,7 @@ std::vector<unsigned int> osgGlyphs::detail::findGlyphsInPolytope(const GlyphChu
             continue;
         for (unsigned int k = chunk.first; k < chunk.first + chunk.count; ++k)
         {
-            const unsigned int glyph = chunks.order->index(k);
+            const unsigned int glyph = chunks.ids[k];
             if (holds(positions[glyph]))
                 inside.push_back(glyph);
         }

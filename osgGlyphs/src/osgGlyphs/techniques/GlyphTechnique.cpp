@@ -30,10 +30,7 @@ TechniqueRegistry& getRegistry()
 void GlyphTechnique::buildPrimitives(GlyphCloud& cloud, const GlyphArrays& arrays) const
 {
     attachGlyphArrays(cloud, arrays, GlyphAttributeRate::PerVertex);
-    if (arrays.order)
-        cloud.addPrimitiveSet(arrays.order);
-    else
-        cloud.addPrimitiveSet(new osg::DrawArrays(GL_POINTS, 0, arrays.count));
+    cloud.addPrimitiveSet(new osg::DrawArrays(GL_POINTS, 0, arrays.count));
 }
 
 void osgGlyphs::registerTechnique(GlyphTechnique* prototype)
