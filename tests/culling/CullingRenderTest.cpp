@@ -1,17 +1,21 @@
 // Culling never changes the picture: dense clouds drawn with occlusion culling are pixel-identical
 // in colour and depth to the same clouds drawn without it, over an orbit with a jump of the
 // camera to the opposite side, for every shape, after in-place edits, under a clip plane and in
-// a second view; and culling does skip chunks, so that these comparisons test something.
+// a second view; and culling does skip chunks, so that these comparisons test something. The
+// culling record of each glyph is checked against the rendered depth: every pixel of a glyph found
+// hidden lies behind it (exact ray-sphere intersections).
 
 #include "../harness/RenderHarness.h"
 
 #include <osgGlyphs/GlyphCloud>
+#include <osgGlyphs/GlyphStateCache>
 
 #include <osg/ClipPlane>
 #include <osg/Geode>
 #include <osg/LightSource>
 
 #include <cmath>
+#include <map>
 #include <random>
 
 using namespace osgGlyphsTest;
@@ -25,17 +29,17 @@ namespace
 const int WIDTH = 320, HEIGHT = 240;
 const unsigned int COUNT = 20000;
 
-/** COUNT random glyphs in the unit cube at 0.4 x their mean spacing: they touch and hide each
- * other, as atoms and grains do. Vector shapes get random directions two radii long. */
-osg::ref_ptr<GlyphCloud> createDenseCloud(GlyphShape shape)
+/** count random glyphs in the unit cube at 0.4 (spacing) x their mean spacing: they touch and hide
+ * each other, as atoms and grains do. Vector shapes get random directions two radii long. */
+osg::ref_ptr<GlyphCloud> createDenseCloud(GlyphShape shape, unsigned int count = COUNT, float spacing = 0.4f)
 {
     std::mt19937 random(7);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
     osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
     osg::ref_ptr<osg::Vec3Array> vectors = new osg::Vec3Array;
     osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray;
-    const float radius = 0.4f / std::cbrt(float(COUNT));
-    for (unsigned int i = 0; i < COUNT; ++i)
+    const float radius = spacing / std::cbrt(float(count));
+    for (unsigned int i = 0; i < count; ++i)
     {
         positions->push_back(osg::Vec3(unit(random), unit(random), unit(random)));
         osg::Vec3 direction(unit(random) - 0.5f, unit(random) - 0.5f, unit(random) - 0.5f);
@@ -82,6 +86,40 @@ int countDifferences(const Frame& a, const Frame& b)
             different += differs;
         }
     return different;
+}
+
+/** At how many pixel centres of its silhouette (exact ray-sphere intersections) a sphere lies
+ * behind the frame's depth, as a hidden glyph must, and at how many it does not (it shows). */
+struct HiddenCheck
+{
+    unsigned int hidden = 0;
+    unsigned int shown = 0;
+};
+
+void checkHidden(const Frame& frame, const osg::Vec3d& centre, double radius, HiddenCheck& check)
+{
+    const osg::Vec3d window = frame.project(centre);
+    // The camera's right vector: the silhouette's radius in pixels, with a margin.
+    const osg::Vec3d right(frame.view(0, 0), frame.view(1, 0), frame.view(2, 0));
+    const osg::Vec3d edge = frame.project(centre + right * (1.5 * radius));
+    const int reach = int(std::ceil(std::hypot(edge.x() - window.x(), edge.y() - window.y()))) + 2;
+    for (int y = std::max(0, int(window.y()) - reach);
+         y <= std::min(frame.height() - 1, int(window.y()) + reach); ++y)
+        for (int x = std::max(0, int(window.x()) - reach);
+             x <= std::min(frame.width() - 1, int(window.x()) + reach); ++x)
+        {
+            osg::Vec3d origin, direction;
+            frame.pixelRay(x + 0.5, y + 0.5, origin, direction);
+            const osg::Vec3d m = origin - centre;
+            const double b = m * direction, c = m * m - radius * radius;
+            if (b * b - c < 0.0)
+                continue;
+            const double t = std::max(0.0, -b - std::sqrt(b * b - c));
+            if (frame.depthAt(x, y) <= frame.windowDepth(origin + direction * t) + 1e-6)
+                ++check.hidden;
+            else
+                ++check.shown;
+        }
 }
 
 osgGlyphs::GlyphCullingStatistics statisticsOf(const GlyphCloud& cloud, Renderer& renderer)
@@ -210,3 +248,93 @@ TEST(CullingRenderEdits, ACloudBehindANearerOneInTheFrontToBackBinIsSkippedWhole
     renderWith(renderer, scene.get(), *back, GlyphCulling::Occlusion);
     EXPECT_GT(statisticsOf(*back, renderer).glyphsSubmitted, COUNT / 10);
 }
+
+// The culling record says where each glyph went: glyphs in chunks outside the view lie outside
+// it, glyphs in chunks found hidden lie behind the depth drawn at their centre, and the glyphs
+// sent to the GPU are the statistics' count. A cut-away of the cloud coloured by the record is
+// saved for the README (tests/output/culling_record*.png).
+class CullingRecord : public ::testing::TestWithParam<float>
+{
+};
+
+TEST_P(CullingRecord, SaysWhereEachGlyphWent)
+{
+    const unsigned int count = 100000;
+    const float spacing = GetParam();
+    Renderer renderer(2 * WIDTH, 2 * HEIGHT);
+    renderer.setPerspective(28.0, 0.5, 5.0);
+    osg::ref_ptr<GlyphCloud> cloud = createDenseCloud(GlyphShape::Sphere, count, spacing);
+    cloud->setCullingChunkSize(512);
+    osg::ref_ptr<osg::Group> scene = createScene(cloud.get());
+    orbit(renderer, 30.0);
+    cloud->setCullingRecorded(true);
+    const Frame view = renderWith(renderer, scene.get(), *cloud, GlyphCulling::Occlusion);
+    const osgGlyphs::GlyphCullingStatistics statistics = statisticsOf(*cloud, renderer);
+    const unsigned int contextID =
+        renderer.getViewer()->getCamera()->getGraphicsContext()->getState()->getContextID();
+    const std::vector<unsigned char> record = cloud->getCullingRecord(contextID);
+    ASSERT_EQ(record.size(), count);
+
+    const osg::Vec3Array& positions = *cloud->getPositions();
+    const float radius = cloud->getRadius();
+    osg::Vec3d eye, centre, up;
+    view.view.getLookAt(eye, centre, up);
+    std::map<unsigned char, unsigned int> counts;
+    HiddenCheck hiddenCheck;
+    for (unsigned int i = 0; i < count; ++i)
+    {
+        ++counts[record[i]];
+        const osg::Vec3d window = view.project(positions[i]);
+        const bool centreInView = window.x() >= 0.0 && window.x() < view.width() && window.y() >= 0.0 &&
+                                  window.y() < view.height() && window.z() <= 1.0;
+        if (record[i] == osgGlyphs::CULLING_OUTSIDE_VIEW)
+        {
+            EXPECT_FALSE(centreInView) << "glyph " << i;
+        }
+        if (record[i] == osgGlyphs::CULLING_OCCLUDED)
+            checkHidden(view, positions[i], radius, hiddenCheck);
+    }
+    unsigned int submitted = 0;
+    for (const auto& [outcome, glyphs] : counts)
+        submitted += outcome >= osgGlyphs::CULLING_FIRST_ROUND ? glyphs : 0;
+    EXPECT_EQ(submitted, statistics.glyphsSubmitted);
+    EXPECT_EQ(hiddenCheck.shown, 0u) << "pixels of glyphs culled as hidden that show";
+    EXPECT_GT(hiddenCheck.hidden, 100000u);
+    EXPECT_GT(counts[osgGlyphs::CULLING_OUTSIDE_VIEW], 0u);
+    EXPECT_GT(counts[osgGlyphs::CULLING_OCCLUDED], count / 10);
+    EXPECT_GT(counts[osgGlyphs::CULLING_FIRST_ROUND], 0u);
+    EXPECT_GT(counts[osgGlyphs::CULLING_FIRST_ROUND + 1], 0u);
+    EXPECT_EQ(counts[osgGlyphs::CULLING_NOT_DRAWN], 0u);
+    if (spacing != 0.4f)
+        return;
+    saveFrame(view, "culling_record_view");
+
+    // The same glyphs coloured by the record, cut open along the view and seen from the side:
+    // the cloud's front (first round) faces the view's eye, behind it what later rounds drew, and
+    // behind that what they found hidden.
+    osg::ref_ptr<osg::Vec4ubArray> colors = new osg::Vec4ubArray;
+    for (unsigned char outcome : record)
+        colors->push_back(outcome == osgGlyphs::CULLING_OUTSIDE_VIEW  ? osg::Vec4ub(150, 150, 150, 255)
+                          : outcome == osgGlyphs::CULLING_OCCLUDED    ? osg::Vec4ub(60, 110, 225, 255)
+                          : outcome == osgGlyphs::CULLING_FIRST_ROUND ? osg::Vec4ub(235, 95, 40, 255)
+                                                                      : osg::Vec4ub(245, 205, 60, 255));
+    osg::ref_ptr<GlyphCloud> coloured = new GlyphCloud(*cloud, osg::CopyOp::SHALLOW_COPY);
+    coloured->setColors(colors.get());
+    osg::ref_ptr<osg::Group> cutAway = createScene(coloured.get());
+    osg::Vec3d viewDirection = centre - eye, across = viewDirection ^ osg::Vec3d(0.0, 0.0, 1.0);
+    across.normalize();
+    const osg::Vec3d middle(0.5, 0.5, 0.5);
+    cutAway->getOrCreateStateSet()->setAttributeAndModes(
+        new osg::ClipPlane(0, osg::Plane(across, -(across * middle))));
+    osgGlyphs::setClipCaps(*cutAway->getOrCreateStateSet(), true);
+    Renderer side(2 * WIDTH, 2 * HEIGHT);
+    side.setPerspective(35.0, 0.5, 6.0);
+    side.setLookAt(middle - across * 2.0 + osg::Vec3d(0.0, 0.0, 0.8), middle, osg::Vec3d(0.0, 0.0, 1.0));
+    saveFrame(side.render(cutAway.get()), "culling_record");
+}
+
+// 0.4: the viewer's default, the README's picture; 0.3: gaps through which later rounds show, so
+// that a test too aggressive shows.
+INSTANTIATE_TEST_SUITE_P(Spacing, CullingRecord, ::testing::Values(0.4f, 0.3f),
+                         [](const ::testing::TestParamInfo<float>& instance)
+                         { return instance.param == 0.4f ? std::string("dense") : std::string("gaps"); });

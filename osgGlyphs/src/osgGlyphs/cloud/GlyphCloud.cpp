@@ -349,6 +349,21 @@ GlyphCullingStatistics GlyphCloud::getCullingStatistics(unsigned int contextID) 
     return contextID < _cullingStatistics.size() ? _cullingStatistics[contextID] : GlyphCullingStatistics();
 }
 
+std::vector<unsigned char> GlyphCloud::getCullingRecord(unsigned int contextID) const
+{
+    if (contextID >= _chunkRecords.size() || !_chunkRecords[contextID].chunks)
+        return {};
+    const ChunkRecord& record = _chunkRecords[contextID];
+    const detail::GlyphChunks& chunks = *record.chunks;
+    std::vector<unsigned char> outcomes(_numGlyphs, CULLING_NOT_DRAWN);
+    for (size_t c = 0; c < chunks.chunks.size() && c < record.outcomes.size(); ++c)
+        for (unsigned int k = chunks.chunks[c].first; k < chunks.chunks[c].first + chunks.chunks[c].count;
+             ++k)
+            if (chunks.ids[k] < outcomes.size())
+                outcomes[chunks.ids[k]] = record.outcomes[c];
+    return outcomes;
+}
+
 void GlyphCloud::updateChunkUse()
 {
     // The chunks hold the glyphs' data only: they stay valid whichever technique draws them.
@@ -583,7 +598,12 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
     vas->setVertexBufferObjectSupported(usingVertexBufferObjects);
     drawVertexArraysImplementation(renderInfo);
     if (culling)
-        statistics = detail::drawChunks(renderInfo, *chunks, _culling);
+    {
+        ChunkRecord* record = _cullingRecorded ? &_chunkRecords[state.getContextID()] : nullptr;
+        if (record)
+            record->chunks = chunks;
+        statistics = detail::drawChunks(renderInfo, *chunks, _culling, record ? &record->outcomes : nullptr);
+    }
     else
     {
         statistics = GlyphCullingStatistics();
@@ -623,6 +643,7 @@ void GlyphCloud::resizeGLObjectBuffers(unsigned int maxSize)
     osg::Geometry::resizeGLObjectBuffers(maxSize);
     _selectionElements->resizeGLObjectBuffers(maxSize);
     _cullingStatistics.resize(maxSize);
+    _chunkRecords.resize(maxSize);
     _variantStateSet->resizeGLObjectBuffers(maxSize);
     _cloudStateSet->resizeGLObjectBuffers(maxSize);
 }

@@ -154,8 +154,16 @@ private:
 }
 
 GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo, const GlyphChunks& chunks,
-                                                     GlyphCulling culling)
+                                                     GlyphCulling culling,
+                                                     std::vector<unsigned char>* outcomes)
 {
+    if (outcomes)
+        outcomes->assign(chunks.chunks.size(), CULLING_OUTSIDE_VIEW);
+    auto record = [outcomes](unsigned int chunk, unsigned char outcome)
+    {
+        if (outcomes)
+            (*outcomes)[chunk] = outcome;
+    };
     osg::State& state = *renderInfo.getState();
     GlyphCullingStatistics statistics;
     statistics.chunks = static_cast<unsigned int>(chunks.chunks.size());
@@ -185,7 +193,10 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
     if (!occlusion || inView.size() < MIN_CHUNKS_FOR_OCCLUSION)
     {
         for (const ChunkInView& chunk : inView)
+        {
             round.push_back(chunk.chunk);
+            record(chunk.chunk, CULLING_FIRST_ROUND);
+        }
         statistics.glyphsSubmitted = drawer.drawChunks(round);
         statistics.rounds = 1;
         return statistics;
@@ -228,9 +239,15 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
                                                                             chunk.y1, CHUNK_TEST_TEXELS)
                                            : 1.0f;
             if (testing && chunk.nearest > farthest + OCCLUSION_MARGIN)
+            {
                 ++statistics.chunksOccluded;
+                record(chunk.chunk, CULLING_OCCLUDED);
+            }
             else
+            {
                 round.push_back(chunk.chunk);
+                record(chunk.chunk, static_cast<unsigned char>(CULLING_FIRST_ROUND + statistics.rounds));
+            }
         }
         statistics.glyphsSubmitted += drawer.drawChunks(round);
         ++statistics.rounds;

@@ -20,9 +20,10 @@ namespace detail
  * it draws the rest in rounds: first the chunks that lay down the cloud's front over the view
  * (putScreenCoverFirst), then the others nearest first. Before each round after the first it
  * reads the depth back into a pyramid, skips the round's chunks that lie behind it and has the
- * glyph programs skip the glyphs that do. */
+ * glyph programs skip the glyphs that do. Where outcomes is given, it gets each chunk's
+ * GlyphCullingOutcome. */
 GlyphCullingStatistics drawChunks(osg::RenderInfo& renderInfo, const GlyphChunks& chunks,
-                                  GlyphCulling culling);
+                                  GlyphCulling culling, std::vector<unsigned char>* outcomes = nullptr);
 
 }
 }
