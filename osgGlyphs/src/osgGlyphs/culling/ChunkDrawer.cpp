@@ -219,16 +219,19 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
     for (double end : ROUND_ENDS)
         if (!drawnBefore || end == 1.0)
             roundEnds.push_back(cover + size_t(std::ceil(end * double(inView.size() - cover))));
+    unsigned int drawnSinceRead = 0;
     for (size_t end : roundEnds)
     {
         if (begin >= inView.size())
             break;
-        if (begin > 0 || drawnBefore)
+        // What the rounds so far drew is what this one is tested against; after a round that drew
+        // nothing the pyramid read before it still holds.
+        if ((begin > 0 || drawnBefore) && !(testing && drawnSinceRead == 0))
         {
-            // What the rounds so far drew is what this one is tested against.
             ++statistics.depthReadbacks;
             testing = context->readDepth(state, *viewport);
             setGlyphTest(state, testing ? context->applyPyramidTexture(state) : 0, context);
+            drawnSinceRead = 0;
         }
         const size_t roundEnd = std::min(inView.size(), std::max(begin + 1, end));
         round.clear();
@@ -249,7 +252,9 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
                 record(chunk.chunk, static_cast<unsigned char>(CULLING_FIRST_ROUND + statistics.rounds));
             }
         }
-        statistics.glyphsSubmitted += drawer.drawChunks(round);
+        const unsigned int drawn = drawer.drawChunks(round);
+        statistics.glyphsSubmitted += drawn;
+        drawnSinceRead += drawn;
         ++statistics.rounds;
         begin = roundEnd;
     }
