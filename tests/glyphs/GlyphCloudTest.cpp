@@ -15,9 +15,11 @@
 #include <osgUtil/Optimizer>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <mutex>
 
 using namespace osgGlyphsTest;
@@ -201,6 +203,45 @@ TEST_F(GlyphCloudData, CulledCloudsDrawCopiesInSpatialOrder)
     cloud->setCulling(osgGlyphs::GlyphCulling::Off);
     EXPECT_EQ(cloud->getDrawnArrays().positions, source.positions);
     EXPECT_EQ(cloud->getVertexArray(), source.positions);
+}
+
+// Sorted spatially, a cloud draws its own arrays: every glyph keeps its values, a glyph that is
+// not drawn goes last, and the picture is the same.
+TEST_F(GlyphCloudData, SortedSpatiallyACloudDrawsItsOwnArrays)
+{
+    osg::ref_ptr<GlyphCloud> cloud = createScalarRow({0.0f, 1.0f, 2.0f, 3.0f, 4.0f});
+    osg::Vec3Array& positions = *cloud->getPositions();
+    std::reverse(positions.begin(), positions.end());
+    positions[2].x() = std::nanf(""); // the middle glyph is not drawn
+    positions.dirty();
+    cloud->setRadii(makeArray<osg::FloatArray>({0.2f, 0.3f, 0.4f, 0.5f, 0.6f}));
+    osg::ref_ptr<osg::Node> scene = group({cloud.get()});
+    const Frame before = renderer.render(scene.get());
+    ASSERT_NE(cloud->getDrawnArrays().positions, cloud->getGlyphArrays().positions);
+    std::map<float, std::pair<float, float>> valuesAt; // x: scalar, radius
+    for (unsigned int i = 0; i < 5; ++i)
+        if (i != 2)
+            valuesAt[positions[i].x()] = {(*cloud->getScalars())[i], (*cloud->getRadii())[i]};
+
+    cloud->sortSpatially();
+    EXPECT_EQ(cloud->getDrawnArrays().positions, cloud->getGlyphArrays().positions);
+    const osg::Vec3Array& sorted = *cloud->getPositions();
+    ASSERT_EQ(sorted.size(), 5u);
+    EXPECT_TRUE(std::isnan(sorted[4].x())) << "the glyph not drawn goes last";
+    EXPECT_EQ((*cloud->getScalars())[4], 2.0f);
+    for (unsigned int i = 0; i < 4; ++i)
+    {
+        ASSERT_EQ(valuesAt.count(sorted[i].x()), 1u) << i;
+        EXPECT_EQ((*cloud->getScalars())[i], valuesAt[sorted[i].x()].first) << i;
+        EXPECT_EQ((*cloud->getRadii())[i], valuesAt[sorted[i].x()].second) << i;
+        if (i > 0)
+        {
+            EXPECT_LT(sorted[i - 1].x(), sorted[i].x()) << "a row is sorted along it";
+        }
+    }
+    const Frame after = renderer.render(scene.get());
+    EXPECT_EQ(std::memcmp(after.color->data(), before.color->data(), after.color->getTotalSizeInBytes()), 0);
+    EXPECT_EQ(std::memcmp(after.depth->data(), before.depth->data(), after.depth->getTotalSizeInBytes()), 0);
 }
 
 TEST_F(GlyphCloudData, GPUFootprintPerGlyph)

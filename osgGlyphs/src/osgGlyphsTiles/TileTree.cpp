@@ -235,6 +235,8 @@ osg::ref_ptr<GlyphCloud> TileWriter::createCloud(const TileGlyphs& glyphs) const
     if (!glyphs.vectors.empty())
         cloud->setVectors(new osg::Vec3Array(glyphs.vectors.begin(), glyphs.vectors.end()));
     cloud->setPositions(new osg::Vec3Array(glyphs.positions.begin(), glyphs.positions.end()));
+    // Stored in the order culling draws them, a tile is drawn from its own arrays, not copies.
+    cloud->sortSpatially();
     return cloud;
 }
 

@@ -5,6 +5,20 @@
 using namespace osgGlyphs;
 using namespace osgGlyphs::detail;
 
+void osgGlyphs::detail::gatherElements(const osg::Array& source, const std::vector<unsigned int>& ids,
+                                       osg::Array& into)
+{
+    into.setNormalize(source.getNormalize());
+    into.setPreserveDataType(source.getPreserveDataType());
+    into.resizeArray(static_cast<unsigned int>(ids.size()));
+    const size_t size = source.getElementSize();
+    const auto* from = static_cast<const char*>(source.getDataPointer());
+    auto* to = static_cast<char*>(const_cast<GLvoid*>(into.getDataPointer()));
+    for (size_t k = 0; k < ids.size(); ++k)
+        std::memcpy(to + k * size, from + size_t(ids[k]) * size, size);
+    into.dirty();
+}
+
 osg::Array* DrawnArrays::gather(Copy& copy, const osg::Array* source, bool orderChanged)
 {
     if (!source)
@@ -23,17 +37,7 @@ osg::Array* DrawnArrays::gather(Copy& copy, const osg::Array* source, bool order
         copy.array = static_cast<osg::Array*>(source->cloneType());
         copy.array->setBinding(osg::Array::BIND_PER_VERTEX);
     }
-    osg::Array& drawn = *copy.array;
-    drawn.setNormalize(source->getNormalize());
-    drawn.setPreserveDataType(source->getPreserveDataType());
-    const std::vector<unsigned int>& ids = _chunks->ids;
-    drawn.resizeArray(static_cast<unsigned int>(ids.size()));
-    const size_t size = source->getElementSize();
-    const auto* from = static_cast<const char*>(source->getDataPointer());
-    auto* to = static_cast<char*>(const_cast<GLvoid*>(drawn.getDataPointer()));
-    for (size_t k = 0; k < ids.size(); ++k)
-        std::memcpy(to + k * size, from + size_t(ids[k]) * size, size);
-    drawn.dirty();
+    gatherElements(*source, _chunks->ids, *copy.array);
     copy.source = source;
     copy.modifiedCount = source->getModifiedCount();
     return copy.array.get();

@@ -14,6 +14,9 @@ namespace osgGlyphs
 namespace detail
 {
 
+/** into, of source's type and flags, holding source's elements at ids in turn. */
+void gatherElements(const osg::Array& source, const std::vector<unsigned int>& ids, osg::Array& into);
+
 /** The arrays a culling technique draws: each chunk one range of them, so that a chunk is read
  * from memory in order and drawn without an index buffer. Where the chunks' order is the
  * caller's own, the caller's arrays; else copies in that order, gathered again only where their

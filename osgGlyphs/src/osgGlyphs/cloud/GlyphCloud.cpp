@@ -386,6 +386,39 @@ void GlyphCloud::updateChunks()
         _numGlyphs, [this](unsigned int i) { return computeGlyphBox(i); }, _cullingChunkSize));
 }
 
+void GlyphCloud::sortSpatially()
+{
+    if (!_chunks || _chunks->isIdentity(_numGlyphs))
+        return;
+    std::vector<unsigned int> order = _chunks->ids;
+    std::vector<bool> placed(_numGlyphs, false);
+    for (unsigned int id : order)
+        placed[id] = true;
+    for (unsigned int i = 0; i < _numGlyphs; ++i)
+        if (!placed[i])
+            order.push_back(i);
+    auto reordered = [&](auto* array)
+    {
+        using ArrayType = std::remove_pointer_t<decltype(array)>;
+        if (!array)
+            return osg::ref_ptr<ArrayType>();
+        std::vector<unsigned int> all = order;
+        for (unsigned int i = _numGlyphs; i < array->getNumElements(); ++i)
+            all.push_back(i); // values past the glyphs stay after them
+        osg::ref_ptr<ArrayType> copy = new ArrayType;
+        detail::gatherElements(*array, all, *copy);
+        return copy;
+    };
+    _radii = reordered(_radii.get());
+    _colors = reordered(_colors.get());
+    _scalars = reordered(_scalars.get());
+    _vectors = reordered(_vectors.get());
+    _occlusion = reordered(_occlusion.get());
+    _positions = reordered(_positions.get());
+    _selection.clear();
+    dirtyGlyphs();
+}
+
 void GlyphCloud::setSelection(const std::vector<unsigned int>& glyphs)
 {
     _selection = glyphs;

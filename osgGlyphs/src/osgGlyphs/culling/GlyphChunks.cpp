@@ -133,9 +133,9 @@ GlyphChunks osgGlyphs::detail::buildGlyphChunks(unsigned int numGlyphs,
 
 bool GlyphChunks::isIdentity(unsigned int numGlyphs) const
 {
-    if (ids.size() != numGlyphs)
+    if (ids.size() > numGlyphs)
         return false;
-    for (unsigned int k = 0; k < numGlyphs; ++k)
+    for (unsigned int k = 0; k < ids.size(); ++k)
         if (ids[k] != k)
             return false;
     return true;

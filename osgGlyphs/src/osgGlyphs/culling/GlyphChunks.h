@@ -30,7 +30,8 @@ struct GlyphChunks
     std::vector<unsigned int> ids;
     std::vector<GlyphChunk> chunks;
 
-    /** Whether every glyph is drawn, at its own index: the caller's arrays are the drawn ones. */
+    /** Whether every drawn glyph is at its own index (those not drawn come after them): the
+     * caller's arrays of numGlyphs glyphs can be drawn as they are. */
     bool isIdentity(unsigned int numGlyphs) const;
 };
 
