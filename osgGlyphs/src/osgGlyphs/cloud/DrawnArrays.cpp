@@ -19,6 +19,15 @@ void osgGlyphs::detail::gatherElements(const osg::Array& source, const std::vect
     into.dirty();
 }
 
+void osgGlyphs::detail::permuteElements(osg::Array& array, const std::vector<unsigned int>& order)
+{
+    osg::ref_ptr<osg::Array> reordered = static_cast<osg::Array*>(array.cloneType());
+    gatherElements(array, order, *reordered);
+    std::memcpy(const_cast<GLvoid*>(array.getDataPointer()), reordered->getDataPointer(),
+                size_t(order.size()) * array.getElementSize());
+    array.dirty();
+}
+
 osg::Array* DrawnArrays::gather(Copy& copy, const osg::Array* source, bool orderChanged)
 {
     if (!source)

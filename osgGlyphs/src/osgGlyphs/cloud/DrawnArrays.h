@@ -17,6 +17,10 @@ namespace detail
 /** into, of source's type and flags, holding source's elements at ids in turn. */
 void gatherElements(const osg::Array& source, const std::vector<unsigned int>& ids, osg::Array& into);
 
+/** Reorders array in place (its type, flags and user values kept): element k becomes the one
+ * at order[k]; order holds each index of the array once. */
+void permuteElements(osg::Array& array, const std::vector<unsigned int>& order);
+
 /** The arrays a culling technique draws: each chunk one range of them, so that a chunk is read
  * from memory in order and drawn without an index buffer. Where the chunks' order is the
  * caller's own, the caller's arrays; else copies in that order, gathered again only where their

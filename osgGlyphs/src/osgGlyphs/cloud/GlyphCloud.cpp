@@ -14,6 +14,8 @@
 #include <osgUtil/CullVisitor>
 #include <osgUtil/IntersectionVisitor>
 
+#include <numeric>
+
 using namespace osgGlyphs;
 
 namespace
@@ -390,6 +392,7 @@ void GlyphCloud::sortSpatially()
 {
     if (!_chunks || _chunks->isIdentity(_numGlyphs))
         return;
+    // The glyph each index gets: the drawn ones in spatial order, then the others in their order.
     std::vector<unsigned int> order = _chunks->ids;
     std::vector<bool> placed(_numGlyphs, false);
     for (unsigned int id : order)
@@ -397,26 +400,40 @@ void GlyphCloud::sortSpatially()
     for (unsigned int i = 0; i < _numGlyphs; ++i)
         if (!placed[i])
             order.push_back(i);
-    auto reordered = [&](auto* array)
+    // Every array in place, and what the cloud packed from them with it: nothing is packed again.
+    for (osg::Array* array :
+         {static_cast<osg::Array*>(_positions.get()), static_cast<osg::Array*>(_radii.get()),
+          static_cast<osg::Array*>(_colors.get()), static_cast<osg::Array*>(_scalars.get()),
+          static_cast<osg::Array*>(_vectors.get()), static_cast<osg::Array*>(_occlusion.get()),
+          static_cast<osg::Array*>(_packed.get()), static_cast<osg::Array*>(_unpacked.get()),
+          static_cast<osg::Array*>(_quantisedPositions.get())})
     {
-        using ArrayType = std::remove_pointer_t<decltype(array)>;
-        if (!array)
-            return osg::ref_ptr<ArrayType>();
+        if (!array || array->getNumElements() < _numGlyphs)
+            continue;
         std::vector<unsigned int> all = order;
         for (unsigned int i = _numGlyphs; i < array->getNumElements(); ++i)
             all.push_back(i); // values past the glyphs stay after them
-        osg::ref_ptr<ArrayType> copy = new ArrayType;
-        detail::gatherElements(*array, all, *copy);
-        return copy;
-    };
-    _radii = reordered(_radii.get());
-    _colors = reordered(_colors.get());
-    _scalars = reordered(_scalars.get());
-    _vectors = reordered(_vectors.get());
-    _occlusion = reordered(_occlusion.get());
-    _positions = reordered(_positions.get());
+        detail::permuteElements(*array, all);
+    }
+    std::vector<uint8_t> skipped(_numGlyphs);
+    for (unsigned int k = 0; k < _numGlyphs; ++k)
+        skipped[k] = _skipped[order[k]];
+    _skipped.swap(skipped);
+    _packedPositions.set(_positions.get());
+    _packedRadii.set(_radii.get());
+    _packedScalars.set(_scalars.get());
+    _packedVectors.set(hasVectorShape() ? _vectors.get() : nullptr);
+    // The same chunks of the same glyphs, each now at its own index.
+    auto sorted = std::make_shared<detail::GlyphChunks>(*_chunks);
+    std::iota(sorted->ids.begin(), sorted->ids.end(), 0u);
+    _chunks = sorted;
+    {
+        std::lock_guard<std::mutex> lock(_pickingMutex);
+        _pickingChunks.reset();
+    }
     _selection.clear();
-    dirtyGlyphs();
+    updateSelectionElements();
+    buildPrimitives();
 }
 
 void GlyphCloud::setSelection(const std::vector<unsigned int>& glyphs)
