@@ -29,18 +29,35 @@ TEST(DepthPyramid, BoundsEveryRectangleFromAbove)
 {
     std::mt19937 random(3);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    // One pyramid, built again over images of other sizes: it keeps its levels' storage.
+    DepthPyramid pyramid;
     for (const auto& size :
-         {std::pair<int, int>(37, 23), std::pair<int, int>(64, 64), std::pair<int, int>(1, 9)})
+         {std::pair<int, int>(64, 64), std::pair<int, int>(37, 23), std::pair<int, int>(1, 9),
+          std::pair<int, int>(9, 1), std::pair<int, int>(65, 34)})
     {
         const int width = size.first, height = size.second;
         std::vector<float> depth(size_t(width) * height);
         for (float& d : depth)
             d = unit(random);
-        DepthPyramid pyramid;
         pyramid.build(depth, width, height);
         ASSERT_TRUE(pyramid.valid());
         EXPECT_EQ(pyramid.getWidth(pyramid.getNumLevels() - 1), 1);
         EXPECT_EQ(pyramid.getHeight(pyramid.getNumLevels() - 1), 1);
+        // Each texel is the farthest of exactly the pixels its class comment gives it.
+        for (int level = 1; level < pyramid.getNumLevels(); ++level)
+        {
+            const int w = pyramid.getWidth(level), h = pyramid.getHeight(level);
+            ASSERT_EQ(pyramid.getLevel(level).size(), size_t(w) * h);
+            std::vector<float> truth(size_t(w) * h, 0.0f);
+            for (int y = 0; y < height; ++y)
+                for (int x = 0; x < width; ++x)
+                {
+                    float& texel =
+                        truth[size_t(std::min(y >> level, h - 1)) * w + std::min(x >> level, w - 1)];
+                    texel = std::max(texel, depth[size_t(y) * width + x]);
+                }
+            ASSERT_EQ(pyramid.getLevel(level), truth) << width << "x" << height << ", level " << level;
+        }
         for (int trial = 0; trial < 2000; ++trial)
         {
             int x0 = int(unit(random) * width), x1 = int(unit(random) * width);

@@ -6,35 +6,82 @@ using namespace osgGlyphs::detail;
 
 void DepthPyramid::build(std::vector<float> depth, int width, int height)
 {
-    _levels.clear();
+    if (width <= 0 || height <= 0 || depth.size() < size_t(width) * size_t(height))
+    {
+        clear();
+        return;
+    }
+    std::copy_n(depth.begin(), size_t(width) * size_t(height), resetImage(width, height));
+    buildLevels();
+}
+
+void DepthPyramid::clear()
+{
     _widths.clear();
     _heights.clear();
-    if (width <= 0 || height <= 0 || depth.size() < size_t(width) * size_t(height))
-        return;
-    _levels.push_back(std::move(depth));
-    _widths.push_back(width);
-    _heights.push_back(height);
-    while (_widths.back() > 1 || _heights.back() > 1)
+}
+
+float* DepthPyramid::resetImage(int width, int height)
+{
+    _widths.assign(1, std::max(width, 0));
+    _heights.assign(1, std::max(height, 0));
+    if (_levels.empty())
+        _levels.resize(1);
+    _levels[0].resize(size_t(_widths[0]) * size_t(_heights[0]));
+    return _levels[0].data();
+}
+
+namespace
+{
+
+/** The farthest depth over fine pixels [x0, x1) x [y0, y1). */
+float farthestOver(const float* fine, int fineWidth, int x0, int x1, int y0, int y1)
+{
+    float farthest = 0.0f;
+    for (int fy = y0; fy < y1; ++fy)
+        for (int fx = x0; fx < x1; ++fx)
+            farthest = std::max(farthest, fine[size_t(fy) * fineWidth + fx]);
+    return farthest;
+}
+
+}
+
+void DepthPyramid::buildLevels()
+{
+    if (_widths.empty() || _widths[0] <= 0 || _heights[0] <= 0)
     {
-        const std::vector<float>& fine = _levels.back();
+        clear();
+        return;
+    }
+    _widths.resize(1);
+    _heights.resize(1);
+    // Each level's storage is kept from the last build: a read-back a round allocates nothing.
+    for (size_t level = 1; _widths.back() > 1 || _heights.back() > 1; ++level)
+    {
         const int fineWidth = _widths.back(), fineHeight = _heights.back();
         const int w = std::max(1, fineWidth / 2), h = std::max(1, fineHeight / 2);
-        std::vector<float> coarse(size_t(w) * size_t(h));
+        if (_levels.size() <= level)
+            _levels.resize(level + 1);
+        _levels[level].resize(size_t(w) * size_t(h));
+        const float* fine = _levels[level - 1].data();
+        float* coarse = _levels[level].data();
         for (int y = 0; y < h; ++y)
         {
-            // The last row and column take what rounding down leaves over.
-            const int yEnd = y == h - 1 ? fineHeight : 2 * y + 2;
-            for (int x = 0; x < w; ++x)
-            {
-                const int xEnd = x == w - 1 ? fineWidth : 2 * x + 2;
-                float farthest = 0.0f;
-                for (int fy = 2 * y; fy < yEnd; ++fy)
-                    for (int fx = 2 * x; fx < xEnd; ++fx)
-                        farthest = std::max(farthest, fine[size_t(fy) * fineWidth + fx]);
-                coarse[size_t(y) * w + x] = farthest;
-            }
+            // The last row and column also take what rounding down leaves over.
+            const bool lastRow = y == h - 1;
+            const int yEnd = lastRow ? fineHeight : 2 * y + 2;
+            const float* row0 = fine + size_t(2 * y) * fineWidth;
+            const float* row1 = row0 + (fineHeight > 1 ? fineWidth : 0);
+            if (lastRow && yEnd - 2 * y != 2)
+                for (int x = 0; x + 1 < w; ++x)
+                    coarse[size_t(y) * w + x] = farthestOver(fine, fineWidth, 2 * x, 2 * x + 2, 2 * y, yEnd);
+            else
+                for (int x = 0; x + 1 < w; ++x)
+                    coarse[size_t(y) * w + x] = std::max(std::max(row0[2 * x], row0[2 * x + 1]),
+                                                         std::max(row1[2 * x], row1[2 * x + 1]));
+            coarse[size_t(y) * w + w - 1] =
+                farthestOver(fine, fineWidth, 2 * (w - 1), fineWidth, 2 * y, yEnd);
         }
-        _levels.push_back(std::move(coarse));
         _widths.push_back(w);
         _heights.push_back(h);
     }
@@ -58,7 +105,7 @@ float DepthPyramid::farthest(int x0, int y0, int x1, int y1, int texels) const
         return 0.0f;
     const int level = std::min(levelFor(x0, y0, x1, y1, texels), getNumLevels() - 1);
     const int w = _widths[level], h = _heights[level];
-    const std::vector<float>& values = _levels[level];
+    const float* values = _levels[level].data();
     float farthest = 0.0f;
     for (int y = std::min(y0 >> level, h - 1); y <= std::min(y1 >> level, h - 1); ++y)
         for (int x = std::min(x0 >> level, w - 1); x <= std::min(x1 >> level, w - 1); ++x)

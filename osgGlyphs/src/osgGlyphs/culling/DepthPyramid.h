@@ -19,9 +19,15 @@ class DepthPyramid
 public:
     /** Builds the pyramid over a width x height depth image, rows from the bottom up. */
     void build(std::vector<float> depth, int width, int height);
-
-    bool valid() const { return !_levels.empty(); }
-    int getNumLevels() const { return static_cast<int>(_levels.size()); }
+    /** The storage of a width x height image, rows from the bottom up, to fill and then build
+     * the levels over (buildLevels()). The storage of every level is kept from one build to the
+     * next. */
+    float* resetImage(int width, int height);
+    void buildLevels();
+    /** No pyramid. */
+    void clear();
+    bool valid() const { return !_widths.empty(); }
+    int getNumLevels() const { return static_cast<int>(_widths.size()); }
     int getWidth(int level) const { return _widths[level]; }
     int getHeight(int level) const { return _heights[level]; }
     const std::vector<float>& getLevel(int level) const { return _levels[level]; }

@@ -26,20 +26,20 @@ bool OcclusionContext::readDepth(osg::State& state, const osg::Viewport& viewpor
     const int width = static_cast<int>(viewport.width()), height = static_cast<int>(viewport.height());
     if (width <= 0 || height <= 0)
         return false;
-    std::vector<float> depth(size_t(width) * size_t(height));
+    float* depth = _pyramid.resetImage(width, height);
     state.unbindPixelBufferObject();
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     while (glGetError() != GL_NO_ERROR)
     {
     }
     glReadPixels(static_cast<GLint>(viewport.x()), static_cast<GLint>(viewport.y()), width, height,
-                 GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+                 GL_DEPTH_COMPONENT, GL_FLOAT, depth);
     if (glGetError() != GL_NO_ERROR)
     {
-        _pyramid.build({}, 0, 0);
+        _pyramid.clear();
         return false;
     }
-    _pyramid.build(std::move(depth), width, height);
+    _pyramid.buildLevels();
     return true;
 }
 
