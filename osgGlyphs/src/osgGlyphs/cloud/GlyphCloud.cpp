@@ -346,6 +346,14 @@ void GlyphCloud::setCullingChunkSize(unsigned int glyphs)
     buildPrimitives();
 }
 
+std::shared_ptr<const detail::GlyphChunks> GlyphCloud::getCullingChunks() const
+{
+    const bool displayList = _useDisplayList && _supportsDisplayList;
+    if (_culling != GlyphCulling::Occlusion || displayList || !getEffectiveTechnique()->supportsCulling())
+        return nullptr;
+    return _chunks;
+}
+
 GlyphCullingStatistics GlyphCloud::getCullingStatistics(unsigned int contextID) const
 {
     return contextID < _cullingStatistics.size() ? _cullingStatistics[contextID] : GlyphCullingStatistics();
@@ -638,6 +646,7 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
     // A display list would keep one frame's choice of chunks, and selection.
     const bool displayList = _useDisplayList && _supportsDisplayList;
     const bool culling = chunks && getEffectiveTechnique()->supportsCulling() && !displayList;
+    bool firstDraw = true;
     // osg::Geometry::drawImplementation, with the chunks that may be seen as its primitives, and
     // the selection drawn again.
     const bool usingVertexBufferObjects =
@@ -652,14 +661,16 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
         ChunkRecord* record = _cullingRecorded ? &_chunkRecords[state.getContextID()] : nullptr;
         if (record)
             record->chunks = chunks;
-        statistics = detail::drawChunks(renderInfo, *chunks, _culling, record ? &record->outcomes : nullptr);
+        // In a FRONT_TO_BACK_BIN, drawn once a round: the selection goes with the first.
+        firstDraw = detail::drawChunks(renderInfo, *chunks, _culling, statistics,
+                                       record ? &record->outcomes : nullptr);
     }
     else
     {
         statistics = GlyphCullingStatistics();
         drawPrimitivesImplementation(renderInfo);
     }
-    if (!displayList)
+    if (!displayList && firstDraw)
         drawSelection(state, usingVertexBufferObjects);
     if (usingVertexBufferObjects && !usingVertexArrayObjects)
     {

@@ -1,4 +1,5 @@
 #include "ChunkDrawer.h"
+#include "BinRounds.h"
 #include "OcclusionContext.h"
 #include "ScreenCover.h"
 
@@ -81,7 +82,7 @@ bool projectChunk(const osg::BoundingBox& box, const osg::Matrixd& modelViewProj
 
 /** Whether the depth buffer holds what a pyramid test assumes: nearer wins and every glyph drawn
  * writes its depth, one sample per pixel. */
-bool canTestDepth(osg::State& state, float& depthNear, float& depthFar)
+bool depthIsTestable(osg::State& state, float& depthNear, float& depthFar)
 {
     const auto* depth =
         dynamic_cast<const osg::Depth*>(state.getLastAppliedAttribute(osg::StateAttribute::DEPTH));
@@ -98,7 +99,7 @@ bool canTestDepth(osg::State& state, float& depthNear, float& depthFar)
 }
 
 /** The glyph programs' occlusion test: on against the context's pyramid of these levels, or off. */
-void setGlyphTest(osg::State& state, int levels, const OcclusionContext* context = nullptr)
+void setProgramTest(osg::State& state, int levels, const OcclusionContext* context = nullptr)
 {
     const osg::Program::PerContextProgram* program = state.getLastAppliedProgramObject();
     if (!program)
@@ -153,10 +154,108 @@ private:
 
 }
 
-GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo, const GlyphChunks& chunks,
-                                                     GlyphCulling culling,
-                                                     std::vector<unsigned char>* outcomes)
+std::vector<ChunkInView> osgGlyphs::detail::projectChunks(const GlyphChunks& chunks,
+                                                          const osg::Matrixd& modelViewProjection,
+                                                          double width, double height, float depthNear,
+                                                          float depthFar)
 {
+    std::vector<ChunkInView> inView;
+    inView.reserve(chunks.chunks.size());
+    for (unsigned int index = 0; index < chunks.chunks.size(); ++index)
+    {
+        ChunkInView projected;
+        projected.chunk = index;
+        if (projectChunk(chunks.chunks[index].box, modelViewProjection, width, height, depthNear, depthFar,
+                         projected))
+            inView.push_back(projected);
+    }
+    std::sort(inView.begin(), inView.end(),
+              [](const ChunkInView& a, const ChunkInView& b) { return a.nearest < b.nearest; });
+    return inView;
+}
+
+std::vector<size_t> osgGlyphs::detail::getRoundEnds(size_t cover, size_t size, bool testedFromStart)
+{
+    std::vector<size_t> ends = {cover};
+    for (double end : ROUND_ENDS)
+        if (!testedFromStart || end == 1.0)
+            ends.push_back(cover + size_t(std::ceil(end * double(size - cover))));
+    return ends;
+}
+
+bool osgGlyphs::detail::isChunkHidden(const ChunkInView& chunk, const DepthPyramid& pyramid)
+{
+    return chunk.nearest >
+           pyramid.farthest(chunk.x0, chunk.y0, chunk.x1, chunk.y1, CHUNK_TEST_TEXELS) + OCCLUSION_MARGIN;
+}
+
+bool osgGlyphs::detail::canTestDepth(osg::State& state)
+{
+    float depthNear = 0.0f, depthFar = 1.0f;
+    return depthIsTestable(state, depthNear, depthFar) && depthNear == 0.0f && depthFar == 1.0f;
+}
+
+void osgGlyphs::detail::setGlyphTest(osg::State& state, bool testing)
+{
+    OcclusionContext* context = osg::get<OcclusionContext>(state.getContextID());
+    setProgramTest(state, testing ? context->applyPyramidTexture(state) : 0, context);
+}
+
+namespace
+{
+
+/** Draws the chunks a FRONT_TO_BACK_BIN chose for the cloud in this round (drawBinInRounds). */
+void drawBinRound(osg::State& state, const GlyphChunks& chunks, GlyphCulling culling, CloudRound& planned,
+                  GlyphCullingStatistics& statistics, std::vector<unsigned char>* outcomes)
+{
+    RangeDrawer drawer(state, chunks);
+    if (planned.round == 0)
+    {
+        statistics = GlyphCullingStatistics();
+        statistics.chunks = static_cast<unsigned int>(chunks.chunks.size());
+        statistics.chunksOutsideView = statistics.chunks - static_cast<unsigned int>(planned.inView.size());
+        if (outcomes)
+        {
+            outcomes->assign(chunks.chunks.size(), CULLING_OUTSIDE_VIEW);
+            for (unsigned int chunk : planned.inView)
+                (*outcomes)[chunk] = CULLING_OCCLUDED;
+        }
+        if (culling != GlyphCulling::Occlusion || !canTestDepth(state))
+        {
+            // Not culled against the others: every chunk in view now.
+            planned.drewAll = true;
+            planned.chunks = planned.inView;
+        }
+    }
+    statistics.depthReadbacks += planned.depthReadbacks;
+    planned.depthReadbacks = 0;
+    if (planned.chunks.empty())
+        return;
+    if (planned.testing && !planned.drewAll)
+        setGlyphTest(state, true);
+    for (unsigned int chunk : planned.chunks)
+        if (outcomes)
+            (*outcomes)[chunk] = static_cast<unsigned char>(CULLING_FIRST_ROUND + planned.round);
+    statistics.glyphsSubmitted += drawer.drawChunks(planned.chunks);
+    statistics.rounds = planned.round + 1;
+    planned.chunksDrawn += static_cast<unsigned int>(planned.chunks.size());
+    statistics.chunksOccluded = static_cast<unsigned int>(planned.inView.size()) - planned.chunksDrawn;
+    setGlyphTest(state, false);
+}
+
+}
+
+bool osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo, const GlyphChunks& chunks,
+                                   GlyphCulling culling, GlyphCullingStatistics& statistics,
+                                   std::vector<unsigned char>* outcomes)
+{
+    osg::State& state = *renderInfo.getState();
+    OcclusionContext* context = osg::get<OcclusionContext>(state.getContextID());
+    if (CloudRound* planned = context->findBinRound(&chunks))
+    {
+        drawBinRound(state, chunks, culling, *planned, statistics, outcomes);
+        return planned->round == 0;
+    }
     if (outcomes)
         outcomes->assign(chunks.chunks.size(), CULLING_OUTSIDE_VIEW);
     auto record = [outcomes](unsigned int chunk, unsigned char outcome)
@@ -164,29 +263,18 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
         if (outcomes)
             (*outcomes)[chunk] = outcome;
     };
-    osg::State& state = *renderInfo.getState();
-    GlyphCullingStatistics statistics;
+    statistics = GlyphCullingStatistics();
     statistics.chunks = static_cast<unsigned int>(chunks.chunks.size());
     const osg::Viewport* viewport = state.getCurrentViewport();
     if (!viewport || chunks.chunks.empty())
-        return statistics;
+        return true;
 
     float depthNear = 0.0f, depthFar = 1.0f;
-    const bool occlusion = culling == GlyphCulling::Occlusion && canTestDepth(state, depthNear, depthFar);
-    const osg::Matrixd modelViewProjection = state.getModelViewMatrix() * state.getProjectionMatrix();
-    std::vector<ChunkInView> inView;
-    inView.reserve(chunks.chunks.size());
-    for (unsigned int index = 0; index < chunks.chunks.size(); ++index)
-    {
-        ChunkInView projected;
-        projected.chunk = index;
-        if (projectChunk(chunks.chunks[index].box, modelViewProjection, viewport->width(), viewport->height(),
-                         depthNear, depthFar, projected))
-            inView.push_back(projected);
-    }
+    const bool occlusion = culling == GlyphCulling::Occlusion && depthIsTestable(state, depthNear, depthFar);
+    std::vector<ChunkInView> inView =
+        projectChunks(chunks, state.getModelViewMatrix() * state.getProjectionMatrix(), viewport->width(),
+                      viewport->height(), depthNear, depthFar);
     statistics.chunksOutsideView = statistics.chunks - static_cast<unsigned int>(inView.size());
-    std::sort(inView.begin(), inView.end(),
-              [](const ChunkInView& a, const ChunkInView& b) { return a.nearest < b.nearest; });
 
     RangeDrawer drawer(state, chunks);
     std::vector<unsigned int> round;
@@ -199,28 +287,21 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
         }
         statistics.glyphsSubmitted = drawer.drawChunks(round);
         statistics.rounds = 1;
-        return statistics;
+        return true;
     }
 
-    OcclusionContext* context = osg::get<OcclusionContext>(state.getContextID());
     // After another cloud in the same camera and frame, even the first round is tested: the
-    // depth buffer already holds that cloud's glyphs, nearer tiles of a paged dataset say.
-    const osg::FrameStamp* frameStamp = state.getFrameStamp();
-    const bool drawnBefore =
-        frameStamp && context->recordDraw(renderInfo.getCurrentCamera(), frameStamp->getFrameNumber());
+    // depth buffer already holds that cloud's glyphs.
+    const bool drawnBefore = context->recordDraw(renderInfo);
     bool testing = false;
     size_t begin = 0;
     // The first round lays down the cloud's front over the view.
     const size_t cover = putScreenCoverFirst(inView, int(viewport->width()), int(viewport->height()));
-    // A cloud drawn after others (a tile of a paged dataset) is tested from its first round on,
-    // against the nearer clouds' depth: its other chunks are one round, since read-backs of its
-    // own few layers cost more than they cull.
-    std::vector<size_t> roundEnds = {cover};
-    for (double end : ROUND_ENDS)
-        if (!drawnBefore || end == 1.0)
-            roundEnds.push_back(cover + size_t(std::ceil(end * double(inView.size() - cover))));
+    // A cloud drawn after others is tested from its first round on, against the nearer clouds'
+    // depth: its other chunks are one round, since read-backs of its own few layers cost more
+    // than they cull.
     unsigned int drawnSinceRead = 0;
-    for (size_t end : roundEnds)
+    for (size_t end : getRoundEnds(cover, inView.size(), drawnBefore))
     {
         if (begin >= inView.size())
             break;
@@ -230,7 +311,7 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
         {
             ++statistics.depthReadbacks;
             testing = context->readDepth(state, *viewport);
-            setGlyphTest(state, testing ? context->applyPyramidTexture(state) : 0, context);
+            setProgramTest(state, testing ? context->applyPyramidTexture(state) : 0, context);
             drawnSinceRead = 0;
         }
         const size_t roundEnd = std::min(inView.size(), std::max(begin + 1, end));
@@ -238,10 +319,7 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
         for (size_t k = begin; k < roundEnd; ++k)
         {
             const ChunkInView& chunk = inView[k];
-            const float farthest = testing ? context->getPyramid().farthest(chunk.x0, chunk.y0, chunk.x1,
-                                                                            chunk.y1, CHUNK_TEST_TEXELS)
-                                           : 1.0f;
-            if (testing && chunk.nearest > farthest + OCCLUSION_MARGIN)
+            if (testing && isChunkHidden(chunk, context->getPyramid()))
             {
                 ++statistics.chunksOccluded;
                 record(chunk.chunk, CULLING_OCCLUDED);
@@ -258,6 +336,6 @@ GlyphCullingStatistics osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo
         ++statistics.rounds;
         begin = roundEnd;
     }
-    setGlyphTest(state, 0);
-    return statistics;
+    setProgramTest(state, 0);
+    return true;
 }

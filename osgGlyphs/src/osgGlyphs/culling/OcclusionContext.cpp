@@ -37,14 +37,21 @@ bool OcclusionContext::readDepth(osg::State& state, const osg::Viewport& viewpor
     if (glGetError() != GL_NO_ERROR)
     {
         _pyramid.clear();
+        _atlasCurrent = false;
         return false;
     }
     _pyramid.buildLevels();
+    _atlasCurrent = false;
     return true;
 }
 
-bool OcclusionContext::recordDraw(const osg::Camera* camera, unsigned int frame)
+bool OcclusionContext::recordDraw(osg::RenderInfo& renderInfo)
 {
+    const osg::FrameStamp* frameStamp = renderInfo.getState()->getFrameStamp();
+    if (!frameStamp)
+        return false;
+    const osg::Camera* camera = renderInfo.getCurrentCamera();
+    const unsigned int frame = frameStamp->getFrameNumber();
     const bool drawnBefore = camera && camera == _lastCamera && frame == _lastFrame;
     _lastCamera = camera;
     _lastFrame = frame;
@@ -56,6 +63,14 @@ int OcclusionContext::applyPyramidTexture(osg::State& state)
     const int levels = std::min(_pyramid.getNumLevels() - 1, MAX_PYRAMID_TEXTURE_LEVELS);
     if (levels <= 0)
         return 0;
+    if (_atlasCurrent)
+    {
+        state.setActiveTextureUnit(DEPTH_PYRAMID_TEXTURE_UNIT);
+        _texture->apply(state);
+        state.haveAppliedTextureAttribute(DEPTH_PYRAMID_TEXTURE_UNIT, _texture.get());
+        return levels;
+    }
+    _atlasCurrent = true;
     // Level 1 at the origin, the levels above it stacked in a column to its right.
     _atlasLevels.clear();
     int width = _pyramid.getWidth(1), height = _pyramid.getHeight(1), columnHeight = 0;

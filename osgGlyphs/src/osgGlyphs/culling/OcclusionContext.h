@@ -3,10 +3,12 @@
 #ifndef OSGGLYPHS_OCCLUSIONCONTEXT_H
 #define OSGGLYPHS_OCCLUSIONCONTEXT_H 1
 
+#include "BinRounds.h"
 #include "DepthPyramid.h"
 
 #include <osg/GLObjects>
 #include <osg/Image>
+#include <osg/RenderInfo>
 #include <osg/State>
 #include <osg/Texture2D>
 #include <osg/Viewport>
@@ -38,9 +40,21 @@ public:
 
     const DepthPyramid& getPyramid() const { return _pyramid; }
 
-    /** Records that a cloud draws into camera in frame; true when another one already did, so
-     * that the depth buffer holds its glyphs (tiles of a paged dataset, clouds side by side). */
-    bool recordDraw(const osg::Camera* camera, unsigned int frame);
+    /** Records that a cloud draws into the current camera in this frame; true when another one
+     * already did, so that the depth buffer holds its glyphs (clouds side by side). */
+    bool recordDraw(osg::RenderInfo& renderInfo);
+
+    /** The rounds a FRONT_TO_BACK_BIN chose for its clouds while it draws them, or null. */
+    void setBinRounds(BinRounds* rounds) { _binRounds = rounds; }
+    /** What the bin being drawn chose for the cloud of these chunks this round; null outside a
+     * bin's draw, or for a cloud it does not cull. */
+    CloudRound* findBinRound(const GlyphChunks* chunks) const
+    {
+        if (!_binRounds)
+            return nullptr;
+        const auto found = _binRounds->find(chunks);
+        return found == _binRounds->end() ? nullptr : &found->second;
+    }
 
     /** Uploads the pyramid and binds it on DEPTH_PYRAMID_TEXTURE_UNIT; returns the levels in the
      * atlas (0: nothing to test against), whose rectangles (x, y, width, height) getAtlasLevels()
@@ -57,6 +71,8 @@ protected:
     void release();
 
     DepthPyramid _pyramid;
+    BinRounds* _binRounds = nullptr;
+    bool _atlasCurrent = false;               // the texture holds the pyramid
     const osg::Camera* _lastCamera = nullptr; // compared, never followed
     unsigned int _lastFrame = 0;
     std::vector<GLint> _atlasLevels;
