@@ -2,6 +2,7 @@
 #include <osgGlyphs/GlyphStateCache>
 
 #include "../culling/ChunkDrawer.h"
+#include "../culling/OcclusionContext.h"
 #include "../state/ClipPlaneState.h"
 #include "../state/GlyphDefines.h"
 #include "../state/ViewState.h"
@@ -9,6 +10,7 @@
 #include "FlattenedTransforms.h"
 #include "PositionGrid.h"
 
+#include <osg/ContextData>
 #include <osg/Depth>
 #include <osg/Uniform>
 #include <osgUtil/CullVisitor>
@@ -579,6 +581,9 @@ void GlyphCloud::accept(osg::NodeVisitor& nv)
     if (observed != traversal)
     {
         GlyphStateCache::observeContext(cv->getState()->getContextID());
+        // Made before the context's first draw: its draw thread only looks it up, while cull
+        // threads look up the context's other objects.
+        osg::get<detail::OcclusionContext>(cv->getState()->getContextID());
         observed = traversal;
     }
     cv->pushStateSet(_variantStateSet.get());
