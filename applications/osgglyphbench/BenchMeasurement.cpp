@@ -8,6 +8,9 @@
 #include <osgGlyphs/ScreenEffects>
 #include <osgGlyphsData/RandomCloud>
 #include <osgGlyphsHeadless/OffscreenViewer>
+#include <osgGlyphsTiles/TileBuilder>
+
+#include <osgDB/ReadFile>
 
 #include <osg/GLExtensions>
 #include <osg/Geode>
@@ -193,6 +196,39 @@ bool measure(const BenchSettings& settings, osg::Node* scene, double& firstFrame
     return true;
 }
 
+}
+
+bool measureArchive(const BenchSettings& settings, BenchResult& result, unsigned int& pagingFrames,
+                    std::string& error)
+{
+    result = BenchResult{"archive", osgGlyphs::GlyphShape::Sphere, 0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0f};
+    result.culling = osgGlyphs::GlyphCulling::Occlusion;
+    if (!osgGlyphsTiles::findTileSerializers(error))
+        return false;
+    osg::ref_ptr<osg::Node> scene = osgDB::readNodeFile(settings.archive);
+    if (!scene)
+    {
+        error = "--archive: cannot read " + settings.archive;
+        return false;
+    }
+    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer = createViewer(settings, scene.get());
+    if (!viewer)
+    {
+        error = "no headless GL context";
+        return false;
+    }
+    result.firstFrameMs = timeFrame(*viewer, 0);
+    pagingFrames = viewer->settlePaging();
+    error = osgGlyphs::GlyphStateCache::instance()->getProgramError();
+    if (!error.empty())
+        return false;
+    std::vector<double> frameMs;
+    for (unsigned int frame = 1; frame <= settings.frames; ++frame)
+        frameMs.push_back(timeFrame(*viewer, frame));
+    result.msMedian = median(frameMs);
+    result.msMin = *std::min_element(frameMs.begin(), frameMs.end());
+    result.msMax = *std::max_element(frameMs.begin(), frameMs.end());
+    return true;
 }
 
 bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings, BenchResult& result,

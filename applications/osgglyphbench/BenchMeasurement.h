@@ -56,6 +56,12 @@ struct BenchResult
 bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings, BenchResult& result,
                  std::string& renderer, std::string& error);
 
+/** Measures settings.archive, a paged tile archive: its first frame, the frames until the
+ * pager has nothing left to load (pagingFrames), then settings.frames timed frames of the same
+ * orbit as the cases. False with a one-line error when it cannot be read or drawn. */
+bool measureArchive(const BenchSettings& settings, BenchResult& result, unsigned int& pagingFrames,
+                    std::string& error);
+
 /** Prints the cost of a frame that draws nothing: clearing and reading the colour buffer back. */
 void printFrameOverhead(const BenchSettings& settings);
 

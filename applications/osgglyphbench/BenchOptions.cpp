@@ -216,6 +216,7 @@ void readValues(osg::ArgumentParser& arguments, BenchSettings& settings)
     arguments.read("--seed", settings.seed);
     arguments.read("--max-ms", settings.maxMs);
     arguments.read("--csv", settings.csvFile);
+    arguments.read("--archive", settings.archive);
     arguments.read("--plot", settings.plotFile);
     if (settings.width <= 0 || settings.height <= 0)
         arguments.reportError("--size: width and height must be positive");
@@ -325,6 +326,11 @@ void describeBenchOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--headless <osmesa|egl>",
                                "The headless GL backend (default: OSGGLYPHS_HEADLESS, else osmesa).");
     usage.addCommandLineOption("--csv <file>", "Write one row per case (columns below), as it goes.");
+    usage.addCommandLineOption(
+        "--archive <file.osga>",
+        "Also measure a paged tile archive (osgglyphconvert; one of the unit cube, such as "
+        "osgglyphconvert --random N) under the same camera, once its tiles have paged in, "
+        "against each case of the run.");
     usage.addCommandLineOption("--plot <file.png>", "Plot frames per second against n, log-log, one line per "
                                                     "technique and one panel per shape, with gnuplot (Debian "
                                                     "package gnuplot-nox).");

@@ -69,6 +69,8 @@ struct BenchSettings
     double maxMs = 0.0; // 0: no limit
     std::string csvFile;
     std::string plotFile;
+    /** A paged tile archive (osgglyphconvert) to measure under the same camera (--archive). */
+    std::string archive;
     DataPath dataPath = DataPath::VBO;
     bool compressedAttributes = true;
     bool compressedPositions = false;

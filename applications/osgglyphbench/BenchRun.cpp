@@ -2,6 +2,7 @@
 
 #include "BenchPlot.h"
 #include "BenchReport.h"
+#include "BenchText.h"
 #include "EqualCoverage.h"
 
 #include <cstdlib>
@@ -151,6 +152,32 @@ bool measureCases(const std::vector<BenchCase>& cases, const BenchSettings& sett
 
 }
 
+namespace
+{
+
+/** Measures the archive and prints its frame against each case of the run. */
+bool measureAndCompareArchive(const BenchSettings& settings, const std::vector<BenchResult>& results)
+{
+    BenchResult archive;
+    unsigned int pagingFrames = 0;
+    std::string error;
+    if (!measureArchive(settings, archive, pagingFrames, error))
+    {
+        std::cerr << PROGRAM << ": error: " << error << std::endl;
+        return false;
+    }
+    std::cout << "archive " << settings.archive << ": paged in over " << pagingFrames << " frames; median "
+              << formatMs(archive.msMedian) << " ms (min " << formatMs(archive.msMin) << ", max "
+              << formatMs(archive.msMax) << ")\n";
+    for (const BenchResult& result : results)
+        std::cout << "  " << format(archive.msMedian / result.msMedian, 2) << "x the " << result.technique
+                  << " " << osgGlyphs::getShapeName(result.shape) << " n=" << result.n << " of this run ("
+                  << formatMs(result.msMedian) << " ms)\n";
+    return true;
+}
+
+}
+
 int runBenchmark(const BenchSettings& settings)
 {
     std::ofstream csv;
@@ -163,6 +190,8 @@ int runBenchmark(const BenchSettings& settings)
     std::vector<BenchResult> results;
     std::string renderer;
     if (!measureCases(cases, settings, csv, results, renderer))
+        return 1;
+    if (!settings.archive.empty() && !measureAndCompareArchive(settings, results))
         return 1;
     printLoad("at the end");
     printSummary(results, settings);

@@ -8,7 +8,6 @@
 #include <osgGlyphsHeadless/DepthImage>
 #include <osgGlyphsHeadless/OffscreenViewer>
 
-#include <osgDB/DatabasePager>
 #include <osgDB/WriteFile>
 
 #include <iostream>
@@ -25,29 +24,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start)
 
 /** The longest wait for paged tiles before a picture is written anyway. */
 const double PAGING_TIMEOUT_SECONDS = 120.0;
-
-/** Renders frames until osgDB's DatabasePager has nothing left to load or merge (a tile
- * archive's tiles, any PagedLOD), so that the picture shows the finished view. Returns how many
- * frames that took. */
-unsigned int settlePaging(osgViewer::Viewer& viewer)
-{
-    osgDB::DatabasePager* pager = viewer.getDatabasePager();
-    const auto start = std::chrono::steady_clock::now();
-    unsigned int frames = 0;
-    auto busy = [pager]
-    {
-        return pager->getRequestsInProgress() || pager->getFileRequestListSize() > 0 ||
-               pager->getDataToMergeListSize() > 0;
-    };
-    while (pager && busy() && millisecondsSince(start) < 1000.0 * PAGING_TIMEOUT_SECONDS)
-    {
-        if (pager->getDataToMergeListSize() == 0)
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        viewer.frame();
-        ++frames;
-    }
-    return frames;
-}
 
 /** Writes the outputs of the frame just rendered; depth comes from sceneCapture, which read it
  * before the legend was drawn, with the projection the scene was drawn with. */
@@ -159,7 +135,7 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
         {
             const double firstPicture = millisecondsSince(start);
             const auto pagingStart = std::chrono::steady_clock::now();
-            if (const unsigned int pagingFrames = settlePaging(*viewer))
+            if (const unsigned int pagingFrames = viewer->settlePaging(PAGING_TIMEOUT_SECONDS))
                 std::cout << PROGRAM << ": the first picture took " << firstPicture
                           << " ms from the start; paged in tiles over " << pagingFrames << " more frames in "
                           << millisecondsSince(pagingStart) << " ms" << std::endl;

@@ -1,5 +1,10 @@
 #include <osgGlyphsHeadless/OffscreenViewer>
 
+#include <osgDB/DatabasePager>
+
+#include <chrono>
+#include <thread>
+
 using namespace osgGlyphsHeadless;
 
 OffscreenViewer::OffscreenViewer(int width, int height, HeadlessBackend backend)
@@ -22,4 +27,25 @@ OffscreenViewer::~OffscreenViewer()
     stopThreading();
     if (_context.valid())
         _context->close();
+}
+
+unsigned int OffscreenViewer::settlePaging(double timeoutSeconds)
+{
+    osgDB::DatabasePager* pager = getDatabasePager();
+    const auto start = std::chrono::steady_clock::now();
+    unsigned int frames = 0;
+    auto busy = [pager]
+    {
+        return pager->getRequestsInProgress() || pager->getFileRequestListSize() > 0 ||
+               pager->getDataToMergeListSize() > 0;
+    };
+    while (pager && busy() &&
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < timeoutSeconds)
+    {
+        if (pager->getDataToMergeListSize() == 0)
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        frame();
+        ++frames;
+    }
+    return frames;
 }
