@@ -28,14 +28,6 @@ std::string describeScreenEffects(ScreenEffectsChoice choice)
     }
 }
 
-std::string formatRatio(const BenchResult& result, const BenchResult* reference)
-{
-    if (!reference)
-        return "-";
-    const double ratio = result.msMedian / reference->msMedian;
-    return format(ratio, ratio >= 10.0 ? 1 : ratio >= 1.0 ? 2 : 3) + "x";
-}
-
 std::string formatOverdraw(double overdraw)
 {
     return overdraw < 0.0 ? "-" : format(overdraw, 2);
@@ -54,6 +46,14 @@ void printSummaryRow(const BenchResult& result, const BenchResult* floor, const 
               << formatOverdraw(result.overdraw) << "\n";
 }
 
+}
+
+std::string formatRatio(const BenchResult& result, const BenchResult* reference)
+{
+    if (!reference)
+        return "-";
+    const double ratio = result.msMedian / reference->msMedian;
+    return format(ratio, ratio >= 10.0 ? 1 : ratio >= 1.0 ? 2 : 3) + "x";
 }
 
 std::string getProgressPrefix(std::size_t index, std::size_t total, const BenchCase& c)

@@ -14,6 +14,9 @@
 extern const char* const CSV_HEADER;
 
 /** "[index/total] technique shape n=N: " */
+/** result's median over reference's, as "1.23x"; "-" without a reference. */
+std::string formatRatio(const BenchResult& result, const BenchResult* reference);
+
 std::string getProgressPrefix(std::size_t index, std::size_t total, const BenchCase& c);
 
 /** Prints a measured case, prefixed with its progress. */

@@ -170,8 +170,8 @@ bool measureAndCompareArchive(const BenchSettings& settings, const std::vector<B
               << formatMs(archive.msMedian) << " ms (min " << formatMs(archive.msMin) << ", max "
               << formatMs(archive.msMax) << ")\n";
     for (const BenchResult& result : results)
-        std::cout << "  " << format(archive.msMedian / result.msMedian, 2) << "x the " << result.technique
-                  << " " << osgGlyphs::getShapeName(result.shape) << " n=" << result.n << " of this run ("
+        std::cout << "  " << formatRatio(archive, &result) << " the " << result.technique << " "
+                  << osgGlyphs::getShapeName(result.shape) << " n=" << result.n << " of this run ("
                   << formatMs(result.msMedian) << " ms)\n";
     return true;
 }

@@ -348,12 +348,16 @@ void GlyphCloud::setCullingChunkSize(unsigned int glyphs)
     buildPrimitives();
 }
 
+bool GlyphCloud::canDrawChunks() const
+{
+    // A display list would keep one frame's choice of chunks, and selection.
+    const bool displayList = _useDisplayList && _supportsDisplayList;
+    return getEffectiveTechnique()->supportsCulling() && !displayList;
+}
+
 std::shared_ptr<const detail::GlyphChunks> GlyphCloud::getCullingChunks() const
 {
-    const bool displayList = _useDisplayList && _supportsDisplayList;
-    if (_culling != GlyphCulling::Occlusion || displayList || !getEffectiveTechnique()->supportsCulling())
-        return nullptr;
-    return _chunks;
+    return _culling == GlyphCulling::Occlusion && canDrawChunks() ? _chunks : nullptr;
 }
 
 GlyphCullingStatistics GlyphCloud::getCullingStatistics(unsigned int contextID) const
@@ -648,9 +652,8 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
     const std::shared_ptr<const detail::GlyphChunks> chunks = _chunks;
     osg::State& state = *renderInfo.getState();
     GlyphCullingStatistics& statistics = _cullingStatistics[state.getContextID()];
-    // A display list would keep one frame's choice of chunks, and selection.
     const bool displayList = _useDisplayList && _supportsDisplayList;
-    const bool culling = chunks && getEffectiveTechnique()->supportsCulling() && !displayList;
+    const bool culling = chunks && canDrawChunks();
     bool firstDraw = true;
     // osg::Geometry::drawImplementation, with the chunks that may be seen as its primitives, and
     // the selection drawn again.

@@ -189,24 +189,13 @@ bool osgGlyphs::detail::isChunkHidden(const ChunkInView& chunk, const DepthPyram
            pyramid.farthest(chunk.x0, chunk.y0, chunk.x1, chunk.y1, CHUNK_TEST_TEXELS) + OCCLUSION_MARGIN;
 }
 
-bool osgGlyphs::detail::canTestDepth(osg::State& state)
-{
-    float depthNear = 0.0f, depthFar = 1.0f;
-    return depthIsTestable(state, depthNear, depthFar) && depthNear == 0.0f && depthFar == 1.0f;
-}
-
-void osgGlyphs::detail::setGlyphTest(osg::State& state, bool testing)
-{
-    OcclusionContext* context = osg::get<OcclusionContext>(state.getContextID());
-    setProgramTest(state, testing ? context->applyPyramidTexture(state) : 0, context);
-}
-
 namespace
 {
 
 /** Draws the chunks a FRONT_TO_BACK_BIN chose for the cloud in this round (drawBinInRounds). */
-void drawBinRound(osg::State& state, const GlyphChunks& chunks, GlyphCulling culling, CloudRound& planned,
-                  GlyphCullingStatistics& statistics, std::vector<unsigned char>* outcomes)
+void drawBinRound(osg::State& state, OcclusionContext& context, const GlyphChunks& chunks,
+                  GlyphCulling culling, CloudRound& planned, GlyphCullingStatistics& statistics,
+                  std::vector<unsigned char>* outcomes)
 {
     RangeDrawer drawer(state, chunks);
     if (planned.round == 0)
@@ -220,7 +209,10 @@ void drawBinRound(osg::State& state, const GlyphChunks& chunks, GlyphCulling cul
             for (unsigned int chunk : planned.inView)
                 (*outcomes)[chunk] = CULLING_OCCLUDED;
         }
-        if (culling != GlyphCulling::Occlusion || !canTestDepth(state))
+        // The bin projected the chunks with the default depth range.
+        float depthNear = 0.0f, depthFar = 1.0f;
+        if (culling != GlyphCulling::Occlusion || !depthIsTestable(state, depthNear, depthFar) ||
+            depthNear != 0.0f || depthFar != 1.0f)
         {
             // Not culled against the others: every chunk in view now.
             planned.drewAll = true;
@@ -232,7 +224,7 @@ void drawBinRound(osg::State& state, const GlyphChunks& chunks, GlyphCulling cul
     if (planned.chunks.empty())
         return;
     if (planned.testing && !planned.drewAll)
-        setGlyphTest(state, true);
+        setProgramTest(state, context.applyPyramidTexture(state), &context);
     for (unsigned int chunk : planned.chunks)
         if (outcomes)
             (*outcomes)[chunk] = static_cast<unsigned char>(CULLING_FIRST_ROUND + planned.round);
@@ -240,7 +232,7 @@ void drawBinRound(osg::State& state, const GlyphChunks& chunks, GlyphCulling cul
     statistics.rounds = planned.round + 1;
     planned.chunksDrawn += static_cast<unsigned int>(planned.chunks.size());
     statistics.chunksOccluded = static_cast<unsigned int>(planned.inView.size()) - planned.chunksDrawn;
-    setGlyphTest(state, false);
+    setProgramTest(state, 0);
 }
 
 }
@@ -253,7 +245,7 @@ bool osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo, const GlyphChunk
     OcclusionContext* context = osg::get<OcclusionContext>(state.getContextID());
     if (CloudRound* planned = context->findBinRound(&chunks))
     {
-        drawBinRound(state, chunks, culling, *planned, statistics, outcomes);
+        drawBinRound(state, *context, chunks, culling, *planned, statistics, outcomes);
         return planned->round == 0;
     }
     if (outcomes)

@@ -41,12 +41,6 @@ std::vector<size_t> getRoundEnds(size_t cover, size_t size, bool testedFromStart
 /** Whether the chunk lies wholly behind the pyramid. */
 bool isChunkHidden(const ChunkInView& chunk, const DepthPyramid& pyramid);
 
-/** Whether the depth buffer holds what a pyramid test assumes, with the default depth range. */
-bool canTestDepth(osg::State& state);
-
-/** Has the glyph programs test each glyph against the context's pyramid, or not. */
-void setGlyphTest(osg::State& state, bool testing);
-
 }
 }
 
