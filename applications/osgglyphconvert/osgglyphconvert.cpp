@@ -291,6 +291,7 @@ bool addPoints(const ConvertOptions& options, const ReadPoints& points, Sequenti
     }
     osgGlyphsData::GlyphMapper mapper(options.mapping);
     mapper.setReduction(shares);
+    mapper.setCulling(osgGlyphs::GlyphCulling::Off); // its clouds only carry the glyphs to the builder
     if (!mapper.prepare(*dataset, options.frame, error))
         return false;
     // Under shares, a pass that has already given the mapping other values than the previous pass

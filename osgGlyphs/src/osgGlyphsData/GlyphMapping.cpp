@@ -452,6 +452,7 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
     cloud->setName(data.getSource() + " timestep " + std::to_string(data.getTimestep()));
     applyGlyphStyle(*cloud, _options);
+    cloud->setCulling(_culling);
     cloud->setOrigin(origin);
     // The positions last: the setters before them work on an empty cloud, and the culling chunks
     // are built once.

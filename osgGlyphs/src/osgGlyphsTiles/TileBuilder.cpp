@@ -52,6 +52,17 @@ std::string temporaryPrefix(const std::string& directory)
         .string();
 }
 
+/** Copies a cloud's settings with empty arrays of its kinds: a style, which costs nothing to
+ * make whatever the cloud holds. */
+class EmptyArraysCopy : public osg::CopyOp
+{
+public:
+    osg::Array* operator()(const osg::Array* array) const override
+    {
+        return array ? static_cast<osg::Array*>(array->cloneType()) : nullptr;
+    }
+};
+
 }
 
 const char* const osgGlyphsTiles::COLOR_TITLE_USER_VALUE = "osgGlyphs_colorTitle";
@@ -88,7 +99,7 @@ bool osgGlyphsTiles::findTileSerializers(std::string& error)
 }
 
 TileBuilder::TileBuilder(const GlyphCloud& style, const TileOptions& options)
-    : _style(new GlyphCloud(style, osg::CopyOp::SHALLOW_COPY)), _options(options), _glyphs(new TileGlyphs)
+    : _style(new GlyphCloud(style, EmptyArraysCopy())), _options(options), _glyphs(new TileGlyphs)
 {
     _options.maxGlyphsPerTile = std::max(_options.maxGlyphsPerTile, 1u);
     if (!isPowerOfTwo(_options.cellsPerAxis) || _options.cellsPerAxis < 2 || _options.cellsPerAxis > 256)
@@ -107,6 +118,7 @@ TileBuilder::TileBuilder(const GlyphCloud& style, const TileOptions& options)
     _style->setVectors(_style->getShape() == osgGlyphs::GlyphShape::Sphere ? nullptr : new osg::Vec3Array);
     _style->setSelection({});
     _style->setOcclusion(nullptr);
+    _style->setCulling(osgGlyphs::GlyphCulling::Occlusion); // the default, whatever the style's
 }
 
 TileBuilder::~TileBuilder() = default;

@@ -1,5 +1,7 @@
 #include "TileTree.h"
 
+#include "../osgGlyphs/culling/RadixSort.h"
+
 #include <osgGlyphs/GlyphCulling>
 
 #include <osgGlyphsTiles/TileBudget>
@@ -244,12 +246,15 @@ TileTree::TileTree(TileGlyphs& glyphs, TileWriter& writer) : _glyphs(glyphs), _w
 {
     // Two halves keyed and sorted side by side, then merged.
     const OctreeCube& cube = writer.getCube();
-    std::vector<std::pair<uint64_t, unsigned int>> keyed(glyphs.positions.size());
+    using Keyed = std::pair<uint64_t, unsigned int>;
+    std::vector<Keyed> keyed(glyphs.positions.size());
     const auto sortRange = [&](unsigned int, std::size_t first, std::size_t last)
     {
         for (std::size_t i = first; i < last; ++i)
             keyed[i] = {cube.code(osg::Vec3d(glyphs.positions[i])), static_cast<unsigned int>(i)};
-        std::sort(keyed.begin() + first, keyed.begin() + last);
+        // Stable by code, so the indices stay ascending: the order of the pairs themselves.
+        osgGlyphs::detail::radixSort(keyed.data() + first, keyed.data() + last, 3 * MORTON_LEVELS,
+                                     [](const Keyed& k) { return k.first; });
     };
     const std::size_t middle = writer.getThreads().runHalves(keyed.size(), sortRange);
     _codes.resize(keyed.size());

@@ -1,4 +1,5 @@
 #include "GlyphChunks.h"
+#include "RadixSort.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -19,23 +20,6 @@ uint32_t spreadBits(uint32_t v)
     v = (v | (v << 4)) & 0x030c30c3;
     v = (v | (v << 2)) & 0x09249249;
     return v;
-}
-
-/** Sorts (code << 32 | id) by the code, least significant digit first, 11 bits at a time. */
-void radixSort(std::vector<uint64_t>& keys)
-{
-    std::vector<uint64_t> scratch(keys.size());
-    for (int shift = 32; shift < 32 + 3 * MORTON_BITS; shift += 11)
-    {
-        size_t offsets[2049] = {};
-        for (uint64_t key : keys)
-            ++offsets[((key >> shift) & 0x7ff) + 1];
-        for (size_t digit = 1; digit < 2049; ++digit)
-            offsets[digit] += offsets[digit - 1];
-        for (uint64_t key : keys)
-            scratch[offsets[(key >> shift) & 0x7ff]++] = key;
-        keys.swap(scratch);
-    }
 }
 
 /** Cuts the sorted keys into chunks along the octree; the chunks' boxes are left empty. */
@@ -110,7 +94,8 @@ GlyphChunks osgGlyphs::detail::buildGlyphChunks(unsigned int numGlyphs,
     }
     ids = std::vector<uint32_t>();
     centres = std::vector<osg::Vec3f>();
-    radixSort(keys);
+    // By the code; stable, so glyphs of one code stay in the order of their ids.
+    radixSort(keys, 3 * MORTON_BITS, [](uint64_t key) { return key >> 32; });
 
     GlyphChunks result;
     Splitter{keys, std::max(1u, maxChunkSize), result.chunks}.split(0, keys.size(), 0);
