@@ -203,6 +203,7 @@ osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildRandom(const ConvertOptions& opti
     osgGlyphsData::RandomCloudOptions random;
     random.shape = options.mapping.shape;
     random.lengthScale = options.mapping.lengthScale;
+    random.culling = osgGlyphs::GlyphCulling::Off; // the clouds only carry the glyphs to the builder
     random.radius = options.mapping.radius > 0.0f
                         ? options.mapping.radius
                         : osgGlyphsData::getDefaultRandomRadius(static_cast<unsigned int>(

@@ -96,6 +96,7 @@ osg::ref_ptr<GlyphCloud> osgGlyphsData::createRandomCloud(const RandomCloudOptio
     const float radius = options.radius > 0.0f ? options.radius : getDefaultRandomRadius(options.count);
     const PointRange range = getShareRange(options.share, options.count);
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+    cloud->setCulling(options.culling);
     cloud->setRadius(radius);
     cloud->setScalars(createScalars(range, options.seed).get());
     cloud->setScalarRange(0.0f, 1.0f);
