@@ -6,11 +6,15 @@
 #include <osgGlyphsData/RandomCloud>
 #include <osgGlyphsTiles/TileBuilder>
 
+#include <osg/NodeVisitor>
+#include <osg/PagedLOD>
+
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <ostream>
 #include <string>
+#include <vector>
 
 using namespace osgGlyphsTest;
 using osgGlyphs::GlyphCloud;
@@ -129,4 +133,51 @@ TEST(TilesLargerThanMemory, AnUnwritableTemporaryFolderIsOneClearError)
     EXPECT_NE(error.find("cannot create a temporary file"), std::string::npos) << error;
 }
 
+}
+
+namespace
+{
+
+/** Every GlyphCloud under a node. */
+class CloudCollector : public osg::NodeVisitor
+{
+public:
+    CloudCollector() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::Drawable& drawable) override
+    {
+        if (GlyphCloud* cloud = dynamic_cast<GlyphCloud*>(&drawable))
+            clouds.push_back(cloud);
+    }
+    std::vector<GlyphCloud*> clouds;
+};
+
+}
+
+// A converter's clouds only carry glyphs to the builder: made without culling, they skip the sort
+// into chunks, and the tiles still cull as the TileBuilder documents.
+TEST(TileStyle, TilesCullByOcclusionWhateverTheirStyleCloud)
+{
+    osgGlyphsData::RandomCloudOptions random;
+    random.count = 20000;
+    random.culling = osgGlyphs::GlyphCulling::Off;
+    osg::ref_ptr<GlyphCloud> carrier = osgGlyphsData::createRandomCloud(random);
+    EXPECT_EQ(carrier->getCullingChunks(), nullptr);
+    osgGlyphsTiles::TileOptions options;
+    options.maxGlyphsPerTile = 3000;
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder = new osgGlyphsTiles::TileBuilder(*carrier, options);
+    std::string error;
+    ASSERT_TRUE(builder->addGlyphs(*carrier, error)) << error;
+    const osg::ref_ptr<osg::Node> tree = builder->createTree();
+    CloudCollector collector;
+    tree->accept(collector);
+    ASSERT_GT(collector.clouds.size(), 8u);
+    unsigned int glyphsInLeaves = 0;
+    for (GlyphCloud* tile : collector.clouds)
+    {
+        EXPECT_EQ(tile->getCulling(), osgGlyphs::GlyphCulling::Occlusion);
+        EXPECT_NE(tile->getCullingChunks(), nullptr);
+        if (!tile->getNumParents() || !dynamic_cast<osg::PagedLOD*>(tile->getParent(0)))
+            glyphsInLeaves += tile->getNumGlyphs();
+    }
+    EXPECT_EQ(glyphsInLeaves, random.count);
 }
