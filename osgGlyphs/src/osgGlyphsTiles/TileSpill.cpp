@@ -77,31 +77,37 @@ bool TileSpill::writeBuffer(std::string& error)
     return true;
 }
 
-bool TileSpill::appendRecord(const TileGlyphs& glyphs, std::size_t i, std::string& error)
+template <typename IndexOf>
+bool TileSpill::appendRecords(const TileGlyphs& glyphs, std::size_t count, const IndexOf& indexOf,
+                              std::string& error)
 {
     const std::size_t size = recordSize();
-    if (_buffer.size() + size > _buffer.capacity() && !writeBuffer(error))
-        return false;
-    _buffer.resize(_buffer.size() + size);
-    pack(glyphs, i, _buffer.data() + _buffer.size() - size);
-    ++_count;
+    for (std::size_t done = 0; done < count;)
+    {
+        if (_buffer.size() + size > _buffer.capacity() && !writeBuffer(error))
+            return false;
+        const std::size_t records = std::min((_buffer.capacity() - _buffer.size()) / size, count - done);
+        const std::size_t at = _buffer.size();
+        _buffer.resize(at + records * size);
+        unsigned char* record = _buffer.data() + at;
+        for (std::size_t i = 0; i < records; ++i, record += size)
+            pack(glyphs, indexOf(done + i), record);
+        done += records;
+        _count += records;
+    }
     return true;
 }
 
 bool TileSpill::append(const TileGlyphs& glyphs, std::size_t begin, std::size_t end, std::string& error)
 {
-    for (std::size_t i = begin; i < end; ++i)
-        if (!appendRecord(glyphs, i, error))
-            return false;
-    return true;
+    return appendRecords(
+        glyphs, end - begin, [begin](std::size_t i) { return begin + i; }, error);
 }
 
 bool TileSpill::append(const TileGlyphs& glyphs, const std::vector<unsigned int>& indices, std::string& error)
 {
-    for (unsigned int i : indices)
-        if (!appendRecord(glyphs, i, error))
-            return false;
-    return true;
+    return appendRecords(
+        glyphs, indices.size(), [&indices](std::size_t i) { return indices[i]; }, error);
 }
 
 bool TileSpill::read(const std::function<bool(const TileGlyphs& block)>& visit, std::string& error)
@@ -123,32 +129,22 @@ bool TileSpill::read(const std::function<bool(const TileGlyphs& block)>& visit, 
                     std::to_string(_count);
             return false;
         }
-        block.clear();
+        block.positions.resize(records);
+        block.radii.resize(records);
+        block.scalars.resize(_scalars ? records : 0);
+        block.colors.resize(_colors ? records : 0);
+        block.vectors.resize(_vectors ? records : 0);
         const unsigned char* from = bytes.data();
         for (std::size_t i = 0; i < records; ++i)
         {
-            osg::Vec3f position, vector;
-            float radius = 0.0f, scalar = 0.0f;
-            osg::Vec4ub color;
-            from = take(from, position);
-            from = take(from, radius);
-            block.positions.push_back(position);
-            block.radii.push_back(radius);
+            from = take(from, block.positions[i]);
+            from = take(from, block.radii[i]);
             if (_scalars)
-            {
-                from = take(from, scalar);
-                block.scalars.push_back(scalar);
-            }
+                from = take(from, block.scalars[i]);
             if (_colors)
-            {
-                from = take(from, color);
-                block.colors.push_back(color);
-            }
+                from = take(from, block.colors[i]);
             if (_vectors)
-            {
-                from = take(from, vector);
-                block.vectors.push_back(vector);
-            }
+                from = take(from, block.vectors[i]);
         }
         done += records;
         if (!visit(block))

@@ -45,7 +45,10 @@ public:
 
 private:
     std::size_t recordSize() const;
-    bool appendRecord(const TileGlyphs& glyphs, std::size_t i, std::string& error);
+    /** Appends the glyphs indexOf(0) .. indexOf(count - 1) of glyphs, a buffer at a time. */
+    template <typename IndexOf>
+    bool appendRecords(const TileGlyphs& glyphs, std::size_t count, const IndexOf& indexOf,
+                       std::string& error);
     void pack(const TileGlyphs& glyphs, std::size_t i, unsigned char* record) const;
     bool writeBuffer(std::string& error);
 

@@ -229,13 +229,19 @@ private:
         for (unsigned int level = _open.empty() ? 0 : _open.back().level + 1; level < unit.level; ++level)
             _open.emplace_back(level, unit.prefix >> 3 * (unit.level - level));
         const auto range = tree.rangeOf(unit.level, unit.prefix);
-        const osg::BoundingBoxd box = tree.boxOf(range.first, range.second);
-        for (OpenNode& node : _open)
-        {
-            node.box.expandBy(box);
-            tree.addRepresentatives(node.level, range.first, range.second, node.representatives);
-        }
-        osg::ref_ptr<osg::Node> node = tree.buildNode(unit.level, unit.prefix, range.first, range.second);
+        // What the unit gives the nodes above it, beside its own tiles: both only read the glyphs.
+        osg::ref_ptr<osg::Node> node;
+        _writer.getThreads().runBoth(
+            [&]
+            {
+                const osg::BoundingBoxd box = tree.boxOf(range.first, range.second);
+                for (OpenNode& open : _open)
+                {
+                    open.box.expandBy(box);
+                    tree.addRepresentatives(open.level, range.first, range.second, open.representatives);
+                }
+            },
+            [&] { node = tree.buildNode(unit.level, unit.prefix, range.first, range.second); });
         if (!node)
             return false;
         attach(node.get());

@@ -312,7 +312,16 @@ osg::ref_ptr<osg::Node> TileTree::buildNode(unsigned int level, uint64_t prefix,
         _writer.addDone(end - begin);
         return cloud;
     }
-    // The octants' subtrees, each of several tiles on a thread of its own while one is free.
+    // The node's own glyphs beside its octants' subtrees, each of several tiles on a thread of
+    // its own while one is free: all of them only read the glyphs.
+    TileGlyphs representatives;
+    osg::BoundingBoxd box;
+    std::thread own = _writer.getThreads().start(
+        [&]
+        {
+            addRepresentatives(level, begin, end, representatives);
+            box = boxOf(begin, end);
+        });
     osg::ref_ptr<osg::Node> octants[8];
     std::thread threads[8];
     std::size_t first = begin;
@@ -337,11 +346,10 @@ osg::ref_ptr<osg::Node> TileTree::buildNode(unsigned int level, uint64_t prefix,
         if (octants[octant])
             children->addChild(octants[octant].get());
     }
+    _writer.getThreads().join(own);
     if (_writer.failed())
         return nullptr;
-    TileGlyphs representatives;
-    addRepresentatives(level, begin, end, representatives);
-    return _writer.createInnerNode(level, prefix, *children, boxOf(begin, end), representatives);
+    return _writer.createInnerNode(level, prefix, *children, box, representatives);
 }
 
 osg::BoundingBoxd TileTree::boxOf(std::size_t begin, std::size_t end) const
