@@ -2,10 +2,10 @@
 #include <osgGlyphsTiles/TileChecksum>
 #include <osgGlyphsTiles/TileRoot>
 
+#include "TileArchive.h"
 #include "TileStream.h"
 
 #include <osg/Version>
-#include <osgDB/Archive>
 #include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
 #include <osgDB/ObjectWrapper>
@@ -258,28 +258,31 @@ bool TileBuilder::write(const std::string& path, std::string& error, const Progr
         error = path + ": cannot replace the file";
         return false;
     }
-    osg::ref_ptr<osgDB::Archive> archive = osgDB::openArchive(path, osgDB::ReaderWriter::CREATE);
-    if (!archive)
+    TileArchive archive;
+    if (!archive.create(path, error))
     {
-        error = path + ": cannot create an OSG archive (osgDB's osga plugin)";
+        error = path + ": " + error;
         return false;
     }
     // The first file written is the archive's master file: a place holder until the root is
     // made, after its descendants, and written again under the same name.
     osg::ref_ptr<osg::Group> placeHolder = new osg::Group;
-    bool written = archive->writeNode(*placeHolder, ROOT_FILE).success();
+    std::string archiveError;
+    bool written = archive.writeNode(*placeHolder, ROOT_FILE, archiveError);
     std::string treeError;
     osg::ref_ptr<osg::Node> root;
-    TileWriter writer(*_style, _options, cubeAround(_box), *_glyphs, archive.get(), getNumGlyphs(), progress);
+    TileWriter writer(*_style, _options, cubeAround(_box), *_glyphs, &archive, getNumGlyphs(), progress);
     if (written)
         root = buildTree(writer, treeError);
     if (root)
         root = createRoot(*root);
-    written = written && root.valid() && archive->writeNode(*root, ROOT_FILE).success();
-    archive->close();
+    written = written && root.valid() && archive.writeNode(*root, ROOT_FILE, archiveError);
+    written = archive.close(archiveError) && written;
     if (!written)
     {
-        error = path + ": " + (treeError.empty() ? "cannot write the tiles" : treeError);
+        error = !treeError.empty()      ? path + ": " + treeError
+                : !archiveError.empty() ? archiveError
+                                        : path + ": cannot write the tiles";
         return false;
     }
     return true;

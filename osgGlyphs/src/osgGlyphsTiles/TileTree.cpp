@@ -106,7 +106,7 @@ void TileGlyphs::append(const TileGlyphs& other)
 }
 
 TileWriter::TileWriter(const GlyphCloud& style, const TileOptions& options, const OctreeCube& cube,
-                       const TileGlyphs& dataset, osgDB::Archive* archive, std::size_t totalGlyphs,
+                       const TileGlyphs& dataset, TileArchive* archive, std::size_t totalGlyphs,
                        const TileBuilder::ProgressFunction& progress)
     : _style(style), _options(options), _cellLevels(log2Of(options.cellsPerAxis)), _cube(cube),
       _origin(dataset.origin), _scalarMin(dataset.scalarMin), _scalarMax(dataset.scalarMax),
@@ -177,15 +177,10 @@ osg::ref_ptr<osg::Node> TileWriter::createInnerNode(unsigned int level, uint64_t
     }
     const std::string file = childrenFileName(level, prefix);
     setTileChecksum(children);
-    osgDB::ReaderWriter::WriteResult written;
+    std::string error;
+    if (!_archive->writeNode(children, file, error))
     {
-        std::lock_guard<std::mutex> lock(_archiveMutex);
-        written = _archive->writeNode(children, file);
-    }
-    if (!written.success())
-    {
-        fail("cannot write " + file + " into the archive" +
-             (written.message().empty() ? std::string() : ": " + written.message()));
+        fail(error);
         return nullptr;
     }
     lod->setFileName(1, file);

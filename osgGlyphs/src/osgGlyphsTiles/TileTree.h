@@ -4,13 +4,13 @@
 #ifndef OSGGLYPHS_TILETREE_H
 #define OSGGLYPHS_TILETREE_H 1
 
+#include "TileArchive.h"
 #include "TileOctree.h"
 #include "TileThreads.h"
 
 #include <osgGlyphsTiles/TileBuilder>
 
 #include <osg/BoundingBox>
-#include <osgDB/Archive>
 
 #include <atomic>
 #include <mutex>
@@ -46,13 +46,13 @@ struct TileGlyphs
 
 /** What every tile of a dataset shares (style, octree cube, origin, colour range) and where the
  * tiles go: each inner node's children are written into the archive as it is made, or, without
- * an archive, kept in place. Its calls are safe from the threads of getThreads(), which write
- * into the archive one at a time. */
+ * an archive, kept in place. Its calls are safe from the threads of getThreads(), which serialise
+ * their tiles side by side. */
 class TileWriter
 {
 public:
     TileWriter(const osgGlyphs::GlyphCloud& style, const TileOptions& options, const OctreeCube& cube,
-               const TileGlyphs& dataset, osgDB::Archive* archive, std::size_t totalGlyphs,
+               const TileGlyphs& dataset, TileArchive* archive, std::size_t totalGlyphs,
                const TileBuilder::ProgressFunction& progress);
 
     const osgGlyphs::GlyphCloud& getStyle() const { return _style; }
@@ -89,7 +89,7 @@ private:
     osg::Vec3d _origin;
     float _scalarMin, _scalarMax;
     osg::ref_ptr<osg::StateSet> _tileStateSet; // the style's, in the front-to-back bin
-    osgDB::Archive* _archive;
+    TileArchive* _archive;
     std::size_t _total;
     TileBuilder::ProgressFunction _progress;
     std::size_t _done = 0;
@@ -99,7 +99,6 @@ private:
     TileThreads _threads;
     mutable std::mutex _progressMutex; // _done, _leavesStart, _error and the progress calls
     mutable std::mutex _styleMutex;    // the style's and the tiles' StateSets' parents
-    std::mutex _archiveMutex;
 };
 
 /** The octree over glyphs and the tiles made from it. The glyphs are a dataset, or a run of
