@@ -4,6 +4,7 @@
 
 #include "culling/DepthPyramid.h"
 #include "culling/GlyphChunks.h"
+#include "culling/RadixSort.h"
 #include "culling/ScreenCover.h"
 
 #include <gtest/gtest.h>
@@ -191,6 +192,30 @@ std::vector<unsigned int> chunkIds(const std::vector<ChunkInView>& chunks)
     return ids;
 }
 
+}
+
+// Against std::stable_sort: 63-bit keys with many equal ones, keys whose high digits all items
+// share (skipped passes), an odd number of moving passes, and a sub-range of a larger array.
+TEST(RadixSort, SortsAsStableSortDoes)
+{
+    using Keyed = std::pair<uint64_t, unsigned int>;
+    std::mt19937_64 random(7);
+    for (const uint64_t keyMask : {uint64_t(0x7fffffffffffffff), uint64_t(0x3f), uint64_t(0x1fffff)})
+        for (const uint64_t sharedHigh : {uint64_t(0), uint64_t(0x5a5) << 52})
+        {
+            std::vector<Keyed> items(20011);
+            for (unsigned int i = 0; i < items.size(); ++i)
+                items[i] = {sharedHigh | (random() & keyMask & (i % 3 ? ~uint64_t(0) : uint64_t(0xff))), i};
+            std::vector<Keyed> expected(items.begin() + 5, items.end() - 6);
+            std::stable_sort(expected.begin(), expected.end(),
+                             [](const Keyed& a, const Keyed& b) { return a.first < b.first; });
+            osgGlyphs::detail::radixSort(items.data() + 5, items.data() + items.size() - 6, 63,
+                                         [](const Keyed& k) { return k.first; });
+            EXPECT_TRUE(std::equal(expected.begin(), expected.end(), items.begin() + 5))
+                << "mask " << keyMask << ", shared " << sharedHigh;
+            EXPECT_EQ(items.front().second, 0u);
+            EXPECT_EQ(items.back().second, items.size() - 1);
+        }
 }
 
 TEST(ScreenCover, TheChunksThatFirstCoverEachCellComeFirstInTheirOrder)

@@ -280,9 +280,10 @@ bool TileBuilder::write(const std::string& path, std::string& error, const Progr
     written = archive.close(archiveError) && written;
     if (!written)
     {
-        error = !treeError.empty()      ? path + ": " + treeError
-                : !archiveError.empty() ? archiveError
-                                        : path + ": cannot write the tiles";
+        error = path + ": " +
+                (!treeError.empty()      ? treeError
+                 : !archiveError.empty() ? archiveError
+                                         : "cannot write the tiles");
         return false;
     }
     return true;

@@ -24,13 +24,13 @@ void radixSort(Item* begin, Item* end, unsigned int keyBits, KeyOf keyOf)
     const std::size_t DIGITS = std::size_t(1) << DIGIT_BITS;
     const std::size_t count = static_cast<std::size_t>(end - begin);
     std::vector<Item> scratch;
+    std::vector<std::size_t> offsets(DIGITS + 1);
     Item* from = begin;
-    Item* to = nullptr;
     for (unsigned int shift = 0; shift < keyBits; shift += DIGIT_BITS)
     {
         const auto digitOf = [&](const Item& item)
         { return static_cast<std::size_t>((uint64_t(keyOf(item)) >> shift) & (DIGITS - 1)); };
-        std::vector<std::size_t> offsets(DIGITS + 1, 0);
+        std::fill(offsets.begin(), offsets.end(), 0);
         for (const Item* item = from; item != from + count; ++item)
             ++offsets[digitOf(*item) + 1];
         bool shared = false;
@@ -42,7 +42,7 @@ void radixSort(Item* begin, Item* end, unsigned int keyBits, KeyOf keyOf)
             offsets[digit] += offsets[digit - 1];
         if (scratch.empty())
             scratch.resize(count);
-        to = from == begin ? scratch.data() : begin;
+        Item* to = from == begin ? scratch.data() : begin;
         for (const Item* item = from; item != from + count; ++item)
             to[offsets[digitOf(*item)]++] = *item;
         from = to;
