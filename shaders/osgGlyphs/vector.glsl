@@ -58,8 +58,30 @@ vec2 projectedRange(vec4 centre, vec4 radiusU, vec4 radiusV, vec4 linear)
     return vec2(b - root, b + root) / a;
 }
 
-/** A screen-space rectangle (four NDC corners, in strip order) that contains the shape: the
-  * exact extents of the projected discs that span it, along the projected axis and across it.
+// The fewest pixels along a vector glyph's rectangle for a trapezoid to pay (measured on cones).
+const float SLOPED_SIDES_PIXELS = 3.0;
+
+/** The support line of the shape's projection with this slope on the far side of across: the q of
+  * across = slope * along + q that bounds every disc (sign 1: from above, -1: from below). */
+float supportOffset(vec4 baseClip, vec4 axisClip, vec4 uClip, vec4 vClip, vec2 discs[3], int count,
+                    vec2 along, vec2 across, float slope, float side)
+{
+    vec4 linear = vec4(side * (across - slope * along), 0.0, 0.0);
+    float q = -1e30;
+    for (int disc = 0; disc < count; ++disc)
+    {
+        vec4 centre = baseClip + axisClip * discs[disc].x;
+        q = max(q, projectedRange(centre, uClip * discs[disc].y, vClip * discs[disc].y, linear).y);
+    }
+    return side * q;
+}
+
+/** A screen-space quadrilateral (four NDC corners, in strip order) that contains the shape. Its
+  * ends are the exact extents of the projected discs along the projected axis; its sides are the
+  * exact extents across it (a rectangle) or, where that is smaller, the support lines sloped from
+  * the first disc's projection to the second's (a trapezoid: a cone seen from the side fills
+  * about half of its rectangle). The wider end comes first, so that the corners' parallelogram
+  * (corners[1] + corners[2] - corners[0]) contains the quadrilateral.
   * Returns false for a glyph wholly behind the near plane. */
 bool vectorScreenBound(vec3 base, vec3 axis, float len, float radius, out vec2 corners[4], out float nearestNdcZ)
 {
@@ -90,6 +112,9 @@ bool vectorScreenBound(vec3 base, vec3 axis, float len, float radius, out vec2 c
 
     vec2 lo = vec2(1e30), hi = vec2(-1e30);
     nearestNdcZ = 1.0;
+    // The first two discs' centres along the axis and extents across it, for the sloped sides.
+    vec2 centreAlong;
+    vec4 edgeAcross;
     for (int disc = 0; disc < count; ++disc)
     {
         vec4 centre = baseClip + axisClip * discs[disc].x;
@@ -99,10 +124,57 @@ bool vectorScreenBound(vec3 base, vec3 axis, float len, float radius, out vec2 c
         lo = min(lo, vec2(alongRange.x, acrossRange.x));
         hi = max(hi, vec2(alongRange.y, acrossRange.y));
         nearestNdcZ = min(nearestNdcZ, projectedRange(centre, radiusU, radiusV, vec4(0.0, 0.0, 1.0, 0.0)).x);
+        if (disc < 2)
+        {
+            centreAlong[disc] = dot(centre.xy / centre.w, along);
+            edgeAcross[disc] = acrossRange.x;
+            edgeAcross[disc + 2] = acrossRange.y;
+        }
     }
-    corners = vec2[4](along * lo.x + across * lo.y, along * hi.x + across * lo.y, along * lo.x + across * hi.y,
-                      along * hi.x + across * hi.y);
     nearestNdcZ = max(nearestNdcZ, -1.0);
+    // Rectangle: across = lo.y and hi.y at both ends, lo.x and hi.x.
+    vec2 lower = vec2(lo.y), upper = vec2(hi.y);
+#ifndef OSGGLYPHS_SHAPE_CYLINDER
+    // (A cylinder's sides are parallel but for perspective: its rectangle is as tight.) Glyphs of
+    // a few pixels cost their primitive, not their fragments, and keep the rectangle.
+    float separation = centreAlong.y - centreAlong.x;
+    vec2 toPixels = 0.5 * osgGlyphs_viewport.zw;
+    float longestSide = max(length(along * toPixels) * (hi.x - lo.x), length(across * toPixels) * (hi.y - lo.y));
+    if (abs(separation) > 0.25 * (hi.x - lo.x) && longestSide >= SLOPED_SIDES_PIXELS)
+    {
+        float lowerSlope = (edgeAcross.y - edgeAcross.x) / separation;
+        float upperSlope = (edgeAcross.w - edgeAcross.z) / separation;
+        // A side may run along a straight edge of the silhouette, which rounding must not move
+        // inside: the sides are moved out by a sixteenth of a pixel.
+        float margin = 0.125 / max(osgGlyphs_viewport.z, osgGlyphs_viewport.w);
+        float lowerQ = supportOffset(baseClip, axisClip, uClip, vClip, discs, count, along, across, lowerSlope, -1.0) -
+                       margin * sqrt(1.0 + lowerSlope * lowerSlope);
+        float upperQ = supportOffset(baseClip, axisClip, uClip, vClip, discs, count, along, across, upperSlope, 1.0) +
+                       margin * sqrt(1.0 + upperSlope * upperSlope);
+        vec2 sloped0 = vec2(lowerSlope, upperSlope) * lo.x + vec2(lowerQ, upperQ);
+        vec2 sloped1 = vec2(lowerSlope, upperSlope) * hi.x + vec2(lowerQ, upperQ);
+        // Both ends hold a point of the shape, so the sides cross only by rounding.
+        float width0 = max(sloped0.y - sloped0.x, 0.0), width1 = max(sloped1.y - sloped1.x, 0.0);
+        if (width0 + width1 < 2.0 * (hi.y - lo.y))
+        {
+            lower = vec2(sloped0.x, sloped1.x);
+            upper = vec2(sloped0.x + width0, sloped1.x + width1);
+        }
+    }
+#endif
+    vec2 ends = vec2(lo.x, hi.x);
+    if (upper.y - lower.y > upper.x - lower.x)
+    {
+        // The frame turned half round, which keeps the winding.
+        along = -along;
+        across = -across;
+        ends = -ends.yx;
+        vec2 turnedLower = -upper.yx;
+        upper = -lower.yx;
+        lower = turnedLower;
+    }
+    corners = vec2[4](along * ends.x + across * lower.x, along * ends.y + across * lower.y,
+                      along * ends.x + across * upper.x, along * ends.y + across * upper.y);
     return true;
 }
 

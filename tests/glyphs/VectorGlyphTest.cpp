@@ -1,18 +1,21 @@
 // Cones, arrows and cylinders against analytic truth: silhouettes and depth along, against and
 // across the view axis, occlusion with fixed-function geometry, crossing glyphs, the near
-// plane, wide fields of view, lit colours against the analytic normal, the paper's cone
-// technique, and degenerate vectors.
+// plane, wide fields of view, lit colours against the analytic normal, how tightly the screen
+// bound holds a cone, the paper's cone technique, and degenerate vectors.
 
 #include "GlyphTestScenes.h"
 
 #include <osgGlyphsPaper/Techniques>
 
 #include <osgGlyphs/GlyphCloud>
+#include <osgGlyphs/GlyphStateCache>
 
 #include <osg/LightSource>
+#include <osgDB/FileUtils>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
 
 using namespace osgGlyphsTest;
@@ -426,6 +429,45 @@ INSTANTIATE_TEST_SUITE_P(, VectorGlyphs,
                                     : param.param == GlyphShape::Arrow ? std::string("Arrow")
                                                                        : std::string("Cylinder");
                          });
+
+TEST(VectorBound, HoldsAConeInATrapezoidNotItsRectangle)
+{
+    // impostor.frag replaced by one that fills every fragment it gets: the frame shows the
+    // primitives themselves. Cones seen from the side and obliquely, 4 radii long.
+    const std::string directory = outputPath("bound-shader");
+    osgDB::makeDirectory(directory + "/osgGlyphs");
+    std::ofstream(directory + "/osgGlyphs/impostor.frag")
+        << "#version 330 compatibility\n#include \"glyph.glsl\"\n#include \"varyings.glsl\"\n"
+           "out vec4 color;\nvoid main() { gl_FragDepth = gl_FragCoord.z; color = vec4(1.0); }\n";
+    const std::vector<VectorSpec> glyphs = {
+        {osg::Vec3(-2.6f, 0.0f, 0.0f), osg::Vec3(0.0f, 0.0f, 2.0f), 0.5f, RED},
+        {osg::Vec3(0.0f, 0.0f, 0.0f), osg::Vec3(1.4f, 0.0f, -1.4f), 0.5f, GREEN},
+        {osg::Vec3(2.6f, 0.0f, 0.0f), osg::Vec3(0.6f, -1.2f, 1.5f), 0.5f, BLUE}};
+    AnalyticScene truth;
+    addVectorGlyphs(truth, GlyphShape::Cone, glyphs);
+    Renderer renderer(160, 120);
+    osgDB::getDataFilePathList().push_front(directory);
+    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+    const Frame frame = renderer.render(group({createVectorCloud(GlyphShape::Cone, glyphs).get()}).get());
+    osgDB::getDataFilePathList().pop_front();
+    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+    saveFrame(frame, "cone_bounds");
+
+    int onCone = 0, bound = 0, missed = 0;
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x)
+        {
+            const bool hit = truth.castPixel(frame, x, y).hit();
+            onCone += hit ? 1 : 0;
+            bound += frame.isCovered(x, y) ? 1 : 0;
+            missed += hit && !frame.isCovered(x, y) ? 1 : 0;
+        }
+    EXPECT_GT(onCone, 600);
+    EXPECT_EQ(missed, 0) << "pixel centres on a cone outside its bound";
+    // Side on, a cone fills half of its rectangle; the trapezoid leaves it about one pixel all round.
+    EXPECT_LT(bound, 1.3 * onCone) << "the bounds cover " << bound << " pixels for " << onCone
+                                   << " on the cones";
+}
 
 TEST(PaperCone, DiffersFromTheExactConeWhereThePaperSaysItDoes)
 {
