@@ -507,23 +507,16 @@ TEST_F(GlyphCloudData, InvalidGlyphsAreSkippedWithAWarning)
 
 TEST_F(GlyphCloudData, AShaderFileOnTheDataPathOverridesTheEmbeddedCopy)
 {
-    const std::string directory = outputPath("shader-override");
-    osgDB::makeDirectory(directory + "/osgGlyphs");
-    {
-        std::ofstream file(directory + "/osgGlyphs/lighting.glsl");
-        file << "uniform vec3 osgGlyphs_material;\n"
-                "vec3 shade(vec3 base, vec3 position, vec3 normal, vec3 toEye, float ambientLight) { return "
-                "vec3(1.0, 0.0, 1.0); }\n";
-    }
+    const std::string directory = writeShaderOverride(
+        "shader-override", "lighting.glsl",
+        "uniform vec3 osgGlyphs_material;\n"
+        "vec3 shade(vec3 base, vec3 position, vec3 normal, vec3 toEye, float ambientLight) { "
+        "return vec3(1.0, 0.0, 1.0); }\n");
     osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{osg::Vec3(), 1.0f, osg::Vec4ub(0, 255, 0, 255)}});
     osg::ref_ptr<osg::Node> scene = group({cloud.get()});
     const osg::Vec4ub magenta(255, 0, 255, 255);
 
-    osgDB::getDataFilePathList().push_front(directory);
-    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
-    const Frame overridden = renderer.render(scene.get());
-    osgDB::getDataFilePathList().pop_front();
-    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+    const Frame overridden = renderWithShaderFolder(renderer, scene.get(), directory);
     const Frame restored = renderer.render(scene.get());
 
     EXPECT_TRUE(colorNear(overridden, 80, 60, magenta, 0));
@@ -610,10 +603,9 @@ std::string renderWithShadersOf(Renderer& renderer, osg::Node* scene, const std:
 
 TEST_F(GlyphCloudData, AShaderThatDoesNotCompileIsOneLineNamingItsFileAndLine)
 {
-    const std::string directory = outputPath("broken-shader");
-    osgDB::makeDirectory(directory + "/osgGlyphs");
     // The sphere's code, which both the geometry and the fragment stage include, with no GLSL on line 3.
-    std::ofstream(directory + "/osgGlyphs/sphere.glsl") << "// broken\n\nthis is not GLSL;\n";
+    const std::string directory =
+        writeShaderOverride("broken-shader", "sphere.glsl", "// broken\n\nthis is not GLSL;\n");
     osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{osg::Vec3(), 1.0f, osg::Vec4ub(0, 255, 0, 255)}});
     cloud->setLit(false);
     osg::ref_ptr<osg::Node> scene = group({cloud.get()});
@@ -636,12 +628,11 @@ TEST_F(GlyphCloudData, AShaderThatDoesNotCompileIsOneLineNamingItsFileAndLine)
 
 TEST_F(GlyphCloudData, AProgramThatDoesNotLinkIsOneLine)
 {
-    const std::string directory = outputPath("unlinkable-shader");
-    osgDB::makeDirectory(directory + "/osgGlyphs");
     // Lighting declared and never defined: every stage compiles, the program cannot link.
-    std::ofstream(directory + "/osgGlyphs/lighting.glsl")
-        << "uniform vec3 osgGlyphs_material;\nvec3 shade(vec3 base, vec3 position, vec3 normal, vec3 "
-           "toEye, float ambientLight);\n";
+    const std::string directory = writeShaderOverride(
+        "unlinkable-shader", "lighting.glsl",
+        "uniform vec3 osgGlyphs_material;\nvec3 shade(vec3 base, vec3 position, vec3 normal, vec3 toEye, "
+        "float ambientLight);\n");
     osg::ref_ptr<GlyphCloud> cloud = createSphereCloud({{osg::Vec3(), 1.0f, osg::Vec4ub(0, 255, 0, 255)}});
     osg::ref_ptr<osg::Node> scene = group({cloud.get()});
 

@@ -1,10 +1,14 @@
 #include "GlyphTestScenes.h"
 
+#include <osgGlyphs/GlyphStateCache>
+
 #include <osg/Geometry>
+#include <osgDB/FileUtils>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 
 namespace osgGlyphsTest
 {
@@ -115,6 +119,24 @@ CentreAgreement compareEveryPixelCentre(const Frame& frame, const AnalyticScene&
         }
     }
     return result;
+}
+
+std::string writeShaderOverride(const std::string& folder, const std::string& name, const std::string& text)
+{
+    const std::string directory = outputPath(folder);
+    osgDB::makeDirectory(directory + "/osgGlyphs");
+    std::ofstream(directory + "/osgGlyphs/" + name) << text;
+    return directory;
+}
+
+Frame renderWithShaderFolder(Renderer& renderer, osg::Node* scene, const std::string& folder)
+{
+    osgDB::getDataFilePathList().push_front(folder);
+    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+    const Frame frame = renderer.render(scene);
+    osgDB::getDataFilePathList().pop_front();
+    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+    return frame;
 }
 
 NotifyCapture::NotifyCapture() : _previous(osg::getNotifyHandler())

@@ -79,6 +79,15 @@ struct CentreAgreement
 CentreAgreement compareEveryPixelCentre(const Frame& frame, const AnalyticScene& truth,
                                         const std::vector<osg::Vec4ub>& palette, double depthTolerance);
 
+/** Writes a shader file that OSG's data path finds before the embedded copy: name (such as
+ * "lighting.glsl") under outputPath(folder)/osgGlyphs. Returns outputPath(folder), the folder to put
+ * on the data path. */
+std::string writeShaderOverride(const std::string& folder, const std::string& name, const std::string& text);
+
+/** Renders the scene with the shader files of folder (see writeShaderOverride) first on OSG's data
+ * path, then takes the folder off the path again; the programs are reloaded on both sides. */
+Frame renderWithShaderFolder(Renderer& renderer, osg::Node* scene, const std::string& folder);
+
 /** Collects OSG's warnings from construction until stop(). Create it with new. */
 class NotifyCapture : public osg::NotifyHandler
 {

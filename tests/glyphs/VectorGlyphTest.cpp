@@ -8,14 +8,11 @@
 #include <osgGlyphsPaper/Techniques>
 
 #include <osgGlyphs/GlyphCloud>
-#include <osgGlyphs/GlyphStateCache>
 
 #include <osg/LightSource>
-#include <osgDB/FileUtils>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 
 using namespace osgGlyphsTest;
@@ -434,11 +431,10 @@ TEST(VectorBound, HoldsAConeInATrapezoidNotItsRectangle)
 {
     // impostor.frag replaced by one that fills every fragment it gets: the frame shows the
     // primitives themselves. Cones seen from the side and obliquely, 4 radii long.
-    const std::string directory = outputPath("bound-shader");
-    osgDB::makeDirectory(directory + "/osgGlyphs");
-    std::ofstream(directory + "/osgGlyphs/impostor.frag")
-        << "#version 330 compatibility\n#include \"glyph.glsl\"\n#include \"varyings.glsl\"\n"
-           "out vec4 color;\nvoid main() { gl_FragDepth = gl_FragCoord.z; color = vec4(1.0); }\n";
+    const std::string folder = writeShaderOverride(
+        "bound-shader", "impostor.frag",
+        "#version 330 compatibility\n#include \"glyph.glsl\"\n#include \"varyings.glsl\"\n"
+        "out vec4 color;\nvoid main() { gl_FragDepth = gl_FragCoord.z; color = vec4(1.0); }\n");
     const std::vector<VectorSpec> glyphs = {
         {osg::Vec3(-2.6f, 0.0f, 0.0f), osg::Vec3(0.0f, 0.0f, 2.0f), 0.5f, RED},
         {osg::Vec3(0.0f, 0.0f, 0.0f), osg::Vec3(1.4f, 0.0f, -1.4f), 0.5f, GREEN},
@@ -446,11 +442,8 @@ TEST(VectorBound, HoldsAConeInATrapezoidNotItsRectangle)
     AnalyticScene truth;
     addVectorGlyphs(truth, GlyphShape::Cone, glyphs);
     Renderer renderer(160, 120);
-    osgDB::getDataFilePathList().push_front(directory);
-    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
-    const Frame frame = renderer.render(group({createVectorCloud(GlyphShape::Cone, glyphs).get()}).get());
-    osgDB::getDataFilePathList().pop_front();
-    osgGlyphs::GlyphStateCache::instance()->reloadShaders();
+    const Frame frame = renderWithShaderFolder(
+        renderer, group({createVectorCloud(GlyphShape::Cone, glyphs).get()}).get(), folder);
     saveFrame(frame, "cone_bounds");
 
     int onCone = 0, bound = 0, missed = 0;
