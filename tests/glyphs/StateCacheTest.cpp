@@ -2,7 +2,8 @@
 // variant, keys scalar colouring by the colour map's serial number, and only observes its
 // StateSets, which go with the last cloud that uses them. Colour maps and clouds that come and go must not
 // accumulate StateSets, textures or GL objects; a new map must never be drawn with a freed one's texture; and
-// releaseGLObjects() must reach every program and texture of the shared state.
+// releaseGLObjects() must reach every program and texture of the shared state, also when a
+// viewer closes and the next one reuses its context ID.
 
 #include "GlyphTestScenes.h"
 
@@ -194,6 +195,29 @@ TEST(StateCache, ANewColourMapIsNeverDrawnWithAFreedOnesColours)
     const Frame after = renderer.render(group({cloud.get()}).get());
     EXPECT_TRUE(sphereColorNear(after, SPHERE_OFFSETS[0], newLow));
     EXPECT_TRUE(sphereColorNear(after, SPHERE_OFFSETS[1], newHigh));
+}
+
+TEST(StateCache, EachViewerAfterAClosedOneLinksItsProgramsInItsOwnContext)
+{
+    // Viewers made and closed one after another reuse context ID 0, and often their cull visitor's
+    // address and, in their first frame, its traversal number: each must register its new
+    // context, so that closing it releases the programs linked there and the next viewer links its
+    // own. A program left linked for a closed context names nothing in the next: glyphs vanish.
+    // (A scene still holding the cloud when its viewer closes would release them itself.)
+    const osg::Vec4 low(1.0f, 0.0f, 0.0f, 1.0f), high(0.0f, 0.0f, 1.0f, 1.0f);
+    osg::ref_ptr<ColorMap> colorMap = new ColorMap("map", {low, high});
+    for (int i = 0; i < 4; ++i)
+    {
+        Renderer renderer(160, 120);
+        ASSERT_EQ(getContextID(renderer), 0u);
+        osg::ref_ptr<GlyphCloud> cloud = createScalarCloud(colorMap.get());
+        const Frame frame = renderer.render(group({cloud.get()}).get());
+        EXPECT_TRUE(sphereColorNear(frame, SPHERE_OFFSETS[0], low)) << "viewer " << i;
+        EXPECT_TRUE(sphereColorNear(frame, SPHERE_OFFSETS[1], high)) << "viewer " << i;
+        // Closed with a scene that no longer holds the cloud: only the context's observer can
+        // release the programs.
+        renderNothing(renderer);
+    }
 }
 
 TEST(StateCache, TextureMultiSpritesGoWithTheirStateSets)

@@ -2,7 +2,6 @@
 #include <osgGlyphs/GlyphStateCache>
 
 #include "../culling/ChunkDrawer.h"
-#include "../culling/OcclusionContext.h"
 #include "../state/ClipPlaneState.h"
 #include "../state/GlyphDefines.h"
 #include "../state/ViewState.h"
@@ -10,7 +9,6 @@
 #include "FlattenedTransforms.h"
 #include "PositionGrid.h"
 
-#include <osg/ContextData>
 #include <osg/Depth>
 #include <osg/Uniform>
 #include <osgUtil/CullVisitor>
@@ -579,17 +577,7 @@ void GlyphCloud::accept(osg::NodeVisitor& nv)
         osg::Geometry::accept(nv);
         return;
     }
-    // Once per cull traversal on each thread: the context registry takes a lock.
-    thread_local std::pair<const osgUtil::CullVisitor*, unsigned int> observed;
-    const std::pair<const osgUtil::CullVisitor*, unsigned int> traversal(cv, cv->getTraversalNumber());
-    if (observed != traversal)
-    {
-        GlyphStateCache::observeContext(cv->getState()->getContextID());
-        // Made before the context's first draw: its draw thread only looks it up, while cull
-        // threads look up the context's other objects.
-        osg::get<detail::OcclusionContext>(cv->getState()->getContextID());
-        observed = traversal;
-    }
+    GlyphStateCache::observeContext(cv->getState()->getContextID());
     cv->pushStateSet(_variantStateSet.get());
     cv->pushStateSet(detail::getViewStateSet(*cv));
     cv->pushStateSet(_cloudStateSet.get());

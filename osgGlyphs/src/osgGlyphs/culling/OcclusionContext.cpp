@@ -110,4 +110,10 @@ void OcclusionContext::release()
     osg::ref_ptr<osg::State> state = new osg::State;
     state->setContextID(getContextID());
     _texture->releaseGLObjects(state.get());
+    // Kept if the context's data outlives it: a later context with this ID starts afresh (its first
+    // camera may come at the address, and its first frame with the number, of this one's last).
+    _pyramid.clear();
+    _atlasCurrent = false;
+    _lastCamera = nullptr;
+    _lastFrame = 0;
 }

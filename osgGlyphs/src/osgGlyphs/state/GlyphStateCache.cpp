@@ -10,10 +10,16 @@
 #include <osg/GLObjects>
 #include <osg/Uniform>
 
+#include <atomic>
+
 using namespace osgGlyphs;
 
 namespace
 {
+
+/** How many times a context's glyph state was released: after one, a context ID seen before may
+ * belong to a new context, with a ContextData of its own. */
+std::atomic<unsigned int> s_contextReleases{0};
 
 /** Lives in a context's osg::ContextData: when OSG deletes or discards that context's GL
  * objects, it releases the shared glyph state of that context, which no scene graph under
@@ -30,12 +36,16 @@ public:
     void deleteAllGLObjects() override { release(); }
     void discardAllGLObjects() override { release(); }
 
+protected:
+    ~GlyphContextObserver() override { ++s_contextReleases; }
+
 private:
     void release()
     {
         osg::ref_ptr<osg::State> state = new osg::State;
         state->setContextID(getContextID());
         GlyphStateCache::instance()->releaseGLObjects(state.get());
+        ++s_contextReleases;
     }
 };
 
@@ -274,7 +284,18 @@ void GlyphStateCache::reportProgramError(const std::string& error)
 
 void GlyphStateCache::observeContext(unsigned int contextID)
 {
+    // The context registry takes a lock: each thread looks again only for another context, or
+    // once a context was released. Keyed by the visitor's address and traversal instead, a
+    // later viewer whose visitor came at the same address missed its new context's observer.
+    thread_local std::pair<unsigned int, unsigned int> observed(~0u, ~0u);
+    const std::pair<unsigned int, unsigned int> context(contextID, s_contextReleases.load());
+    if (observed == context)
+        return;
     osg::get<GlyphContextObserver>(contextID);
+    // Made before the context's first draw: its draw thread only looks it up, while cull
+    // threads look up the context's other objects.
+    osg::get<detail::OcclusionContext>(contextID);
+    observed = context;
 }
 
 void GlyphStateCache::releaseGLObjects(osg::State* state) const

@@ -31,21 +31,9 @@ void update(osg::Uniform& uniform, const Value& value)
 
 osg::StateSet* osgGlyphs::detail::getViewStateSet(osgUtil::CullVisitor& cv)
 {
-    // Clouds of one render stage share its view state: the lookup is done once per stage and
-    // traversal on each cull thread.
-    struct LastLookup
-    {
-        const osgUtil::CullVisitor* visitor = nullptr;
-        const osgUtil::RenderStage* stage = nullptr;
-        unsigned int traversal = 0;
-        osg::StateSet* stateSet = nullptr;
-    };
-    thread_local LastLookup last;
+    // Clouds of one render stage share its view state. (A per-thread cache keyed by the stage's
+    // and the visitor's addresses could hand a later stage at the same address a dead one's.)
     osgUtil::RenderStage* stage = cv.getCurrentRenderStage();
-    if (last.visitor == &cv && last.stage == stage && last.traversal == cv.getTraversalNumber() &&
-        last.stateSet)
-        return last.stateSet;
-
     osg::UserDataContainer* container = stage->getOrCreateUserDataContainer();
     osg::StateSet* stateSet = dynamic_cast<osg::StateSet*>(container->getUserObject(VIEW_STATE_NAME));
     if (!stateSet)
