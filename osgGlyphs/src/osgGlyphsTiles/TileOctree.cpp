@@ -26,8 +26,12 @@ const double MORTON_STEPS = double(1u << MORTON_LEVELS);
 
 uint64_t quantise(double value, double min, double stepsPerUnit)
 {
-    const double q = std::floor((value - min) * stepsPerUnit);
-    return static_cast<uint64_t>(std::clamp(q, 0.0, MORTON_STEPS - 1.0));
+    // floor() clamped to the steps, without a call: the conversion truncates, which is floor()
+    // from 0 on.
+    const double q = (value - min) * stepsPerUnit;
+    if (!(q > 0.0))
+        return 0;
+    return q < MORTON_STEPS - 1.0 ? static_cast<uint64_t>(q) : static_cast<uint64_t>(MORTON_STEPS - 1.0);
 }
 
 }

@@ -285,8 +285,11 @@ uint16_t GlyphCloud::quantiseScalar(float scalar, const osg::Vec2& range)
     const double span = double(range.y()) - double(range.x());
     if (!std::isfinite(scalar) || !(span > 0.0) || !std::isfinite(span))
         return 0;
-    return static_cast<uint16_t>(
-        std::lround(std::clamp((double(scalar) - range.x()) * (65535.0 / span), 0.0, 65535.0)));
+    // std::lround on the clamped value, half away from zero, without a call: the conversion
+    // truncates, and from 0 on the fraction left is exact.
+    const double steps = std::clamp((double(scalar) - range.x()) * (65535.0 / span), 0.0, 65535.0);
+    const uint16_t whole = static_cast<uint16_t>(steps);
+    return static_cast<uint16_t>(whole + (steps - whole >= 0.5 ? 1 : 0));
 }
 
 float GlyphCloud::dequantiseScalar(uint16_t step, const osg::Vec2& range)
