@@ -307,6 +307,9 @@ bool addPoints(const ConvertOptions& options, const ReadPoints& points, Sequenti
         std::cerr << PROGRAM << ": " << mapper.describe() << std::endl;
         builder = new osgGlyphsTiles::TileBuilder(*cloud, options.tiles);
         builder->setColorTitle(mapper.getColorKey().title);
+        // The whole file's box (under shares, from the previous pass): the glyphs past the memory
+        // are sorted into octree nodes as they come.
+        builder->setBounds(mapper.getPositionBounds());
     }
     if (!builder->addGlyphs(*cloud, error))
     {

@@ -124,6 +124,7 @@ bool GlyphMapper::prepare(const PointDataset& dataset, std::size_t startFrame, s
         error = missingColumn(option("radius-by"), _options.radiusColumn, *data);
         return false;
     }
+    computeBounds(positions);
     computeSizes(*data, positions);
 
     _key = ColorKey();
@@ -299,6 +300,25 @@ bool GlyphMapper::computeRange(const PointDataset& dataset, std::string& error)
     return true;
 }
 
+void GlyphMapper::computeBounds(const std::vector<osg::Vec3f>& positions)
+{
+    // In double: the extent of float positions may exceed the range of a float.
+    osg::BoundingBoxd box;
+    for (const osg::Vec3f& p : positions)
+    {
+        if (std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()))
+            box.expandBy(osg::Vec3d(p));
+    }
+    if (_reduction.valid())
+    {
+        std::vector<double> low(box._min.ptr(), box._min.ptr() + 3), high(box._max.ptr(), box._max.ptr() + 3);
+        _reduction->minimum(low);
+        _reduction->maximum(high);
+        box.set(low[0], low[1], low[2], high[0], high[1], high[2]);
+    }
+    _positionBounds = box;
+}
+
 void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec3f>& positions)
 {
     const bool vectorShape = _options.shape != GlyphShape::Sphere;
@@ -342,21 +362,7 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
         typical = _radius = _options.radius;
     else
     {
-        // In double: the extent of float positions may exceed the range of a float.
-        osg::BoundingBoxd box;
-        for (const osg::Vec3f& p : positions)
-        {
-            if (std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()))
-                box.expandBy(osg::Vec3d(p));
-        }
-        if (_reduction.valid())
-        {
-            std::vector<double> low(box._min.ptr(), box._min.ptr() + 3),
-                high(box._max.ptr(), box._max.ptr() + 3);
-            _reduction->minimum(low);
-            _reduction->maximum(high);
-            box.set(low[0], low[1], low[2], high[0], high[1], high[2]);
-        }
+        const osg::BoundingBoxd& box = _positionBounds;
         const double diagonal = box.valid() ? (box._max - box._min).length() : 0.0;
         const double spacing = _reduction.valid() ? detail::estimateNeighbourDistance(positions, *_reduction)
                                                   : detail::estimateNeighbourDistance(positions);

@@ -27,34 +27,19 @@ const unsigned char* take(const unsigned char* from, T& value)
 
 }
 
-TileSpill::TileSpill(const std::string& path, bool scalars, bool colors, bool vectors)
-    : _path(path), _scalars(scalars), _colors(colors), _vectors(vectors),
-      _file(std::fopen(path.c_str(), "w+b"))
+TileRecordFormat::TileRecordFormat(bool scalars, bool colors, bool vectors)
+    : _scalars(scalars), _colors(colors), _vectors(vectors),
+      _size(sizeof(osg::Vec3f) + sizeof(float) + (scalars ? sizeof(float) : 0) +
+            (colors ? sizeof(osg::Vec4ub) : 0) + (vectors ? sizeof(osg::Vec3f) : 0))
 {
-    _buffer.reserve(BLOCK_RECORDS * recordSize());
 }
 
-TileSpill::~TileSpill()
+TileRecordFormat::TileRecordFormat(const TileGlyphs& like)
+    : TileRecordFormat(!like.scalars.empty(), !like.colors.empty(), !like.vectors.empty())
 {
-    if (_file)
-    {
-        std::fclose(_file);
-        std::remove(_path.c_str());
-    }
 }
 
-std::unique_ptr<TileSpill> TileSpill::createLike(const std::string& path) const
-{
-    return std::make_unique<TileSpill>(path, _scalars, _colors, _vectors);
-}
-
-std::size_t TileSpill::recordSize() const
-{
-    return sizeof(osg::Vec3f) + sizeof(float) + (_scalars ? sizeof(float) : 0) +
-           (_colors ? sizeof(osg::Vec4ub) : 0) + (_vectors ? sizeof(osg::Vec3f) : 0);
-}
-
-void TileSpill::pack(const TileGlyphs& glyphs, std::size_t i, unsigned char* record) const
+void TileRecordFormat::pack(const TileGlyphs& glyphs, std::size_t i, unsigned char* record) const
 {
     record = put(record, glyphs.positions[i]);
     record = put(record, glyphs.radii[i]);
@@ -64,6 +49,50 @@ void TileSpill::pack(const TileGlyphs& glyphs, std::size_t i, unsigned char* rec
         record = put(record, glyphs.colors[i]);
     if (_vectors)
         put(record, glyphs.vectors[i]);
+}
+
+void TileRecordFormat::reserve(TileGlyphs& glyphs, std::size_t count) const
+{
+    glyphs.positions.reserve(count);
+    glyphs.radii.reserve(count);
+    glyphs.scalars.reserve(_scalars ? count : 0);
+    glyphs.colors.reserve(_colors ? count : 0);
+    glyphs.vectors.reserve(_vectors ? count : 0);
+}
+
+void TileRecordFormat::unpack(const unsigned char* bytes, std::size_t count, TileGlyphs& glyphs) const
+{
+    glyphs.positions.resize(count);
+    glyphs.radii.resize(count);
+    glyphs.scalars.resize(_scalars ? count : 0);
+    glyphs.colors.resize(_colors ? count : 0);
+    glyphs.vectors.resize(_vectors ? count : 0);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        bytes = take(bytes, glyphs.positions[i]);
+        bytes = take(bytes, glyphs.radii[i]);
+        if (_scalars)
+            bytes = take(bytes, glyphs.scalars[i]);
+        if (_colors)
+            bytes = take(bytes, glyphs.colors[i]);
+        if (_vectors)
+            bytes = take(bytes, glyphs.vectors[i]);
+    }
+}
+
+TileSpill::TileSpill(const std::string& path, const TileRecordFormat& format)
+    : _path(path), _format(format), _file(std::fopen(path.c_str(), "w+b"))
+{
+    _buffer.reserve(BLOCK_RECORDS * _format.size());
+}
+
+TileSpill::~TileSpill()
+{
+    if (_file)
+    {
+        std::fclose(_file);
+        std::remove(_path.c_str());
+    }
 }
 
 bool TileSpill::writeBuffer(std::string& error)
@@ -77,37 +106,22 @@ bool TileSpill::writeBuffer(std::string& error)
     return true;
 }
 
-template <typename IndexOf>
-bool TileSpill::appendRecords(const TileGlyphs& glyphs, std::size_t count, const IndexOf& indexOf,
-                              std::string& error)
+bool TileSpill::append(const TileGlyphs& glyphs, std::size_t begin, std::size_t end, std::string& error)
 {
-    const std::size_t size = recordSize();
-    for (std::size_t done = 0; done < count;)
+    const std::size_t size = _format.size();
+    for (std::size_t i = begin; i < end;)
     {
         if (_buffer.size() + size > _buffer.capacity() && !writeBuffer(error))
             return false;
-        const std::size_t records = std::min((_buffer.capacity() - _buffer.size()) / size, count - done);
+        const std::size_t records = std::min((_buffer.capacity() - _buffer.size()) / size, end - i);
         const std::size_t at = _buffer.size();
         _buffer.resize(at + records * size);
         unsigned char* record = _buffer.data() + at;
-        for (std::size_t i = 0; i < records; ++i, record += size)
-            pack(glyphs, indexOf(done + i), record);
-        done += records;
+        for (std::size_t last = i + records; i < last; ++i, record += size)
+            _format.pack(glyphs, i, record);
         _count += records;
     }
     return true;
-}
-
-bool TileSpill::append(const TileGlyphs& glyphs, std::size_t begin, std::size_t end, std::string& error)
-{
-    return appendRecords(
-        glyphs, end - begin, [begin](std::size_t i) { return begin + i; }, error);
-}
-
-bool TileSpill::append(const TileGlyphs& glyphs, const std::vector<unsigned int>& indices, std::string& error)
-{
-    return appendRecords(
-        glyphs, indices.size(), [&indices](std::size_t i) { return indices[i]; }, error);
 }
 
 bool TileSpill::read(const std::function<bool(const TileGlyphs& block)>& visit, std::string& error)
@@ -117,7 +131,7 @@ bool TileSpill::read(const std::function<bool(const TileGlyphs& block)>& visit, 
         error = _path + ": cannot read the temporary file back (" + std::strerror(errno) + ")";
         return false;
     }
-    const std::size_t size = recordSize();
+    const std::size_t size = _format.size();
     std::vector<unsigned char> bytes(BLOCK_RECORDS * size);
     TileGlyphs block;
     for (std::size_t done = 0; done < _count;)
@@ -129,23 +143,7 @@ bool TileSpill::read(const std::function<bool(const TileGlyphs& block)>& visit, 
                     std::to_string(_count);
             return false;
         }
-        block.positions.resize(records);
-        block.radii.resize(records);
-        block.scalars.resize(_scalars ? records : 0);
-        block.colors.resize(_colors ? records : 0);
-        block.vectors.resize(_vectors ? records : 0);
-        const unsigned char* from = bytes.data();
-        for (std::size_t i = 0; i < records; ++i)
-        {
-            from = take(from, block.positions[i]);
-            from = take(from, block.radii[i]);
-            if (_scalars)
-                from = take(from, block.scalars[i]);
-            if (_colors)
-                from = take(from, block.colors[i]);
-            if (_vectors)
-                from = take(from, block.vectors[i]);
-        }
+        _format.unpack(bytes.data(), records, block);
         done += records;
         if (!visit(block))
             break;

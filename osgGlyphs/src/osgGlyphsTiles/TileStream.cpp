@@ -36,61 +36,41 @@ struct OpenNode
     }
 };
 
-/** The share of the progress of the passes over every glyph that come before the tiles: counting,
- * then sorting into partitions (measured: about a tenth of the time, mostly the sorting). */
-const double COUNTED = 0.02, DISTRIBUTED = 0.12;
-
-/** The glyphs of the spill, then the tail, a block at a time, reporting progress from first to
- * last of the writer's. */
-bool readGlyphs(TileSpill& spill, const TileGlyphs& tail, TileWriter& writer, double first, double last,
-                const std::function<void(const TileGlyphs& block)>& visit, std::string& error)
+/** A bucket that partitions read their glyphs from. */
+struct Source
 {
-    const double total = double(spill.size() + tail.size());
-    std::size_t done = 0;
-    if (!spill.read(
-            [&](const TileGlyphs& block)
-            {
-                visit(block);
-                done += block.size();
-                writer.setProgress(first + (last - first) * done / total);
-                return true;
-            },
-            error))
-        return false;
-    visit(tail);
-    writer.setProgress(last);
-    return true;
-}
+    TileBuckets* buckets;
+    std::size_t bucket;
+    unsigned int level;
+    uint64_t prefix;
+};
 
 class StreamedTree
 {
 public:
-    StreamedTree(TileWriter& writer, std::size_t budget)
-        : _writer(writer), _budget(std::max<std::size_t>(budget, writer.getOptions().maxGlyphsPerTile)),
-          _countLevel(std::min(writer.getCellLevels(), MAX_COUNT_LEVEL))
+    StreamedTree(TileWriter& writer, const TileRecordFormat& format, std::size_t budget,
+                 const std::string& temporaryPrefix)
+        : _writer(writer), _format(format),
+          _budget(std::max<std::size_t>(budget, writer.getOptions().maxGlyphsPerTile)),
+          _countLevel(streamCountLevel(writer.getOptions())), _temporaryPrefix(temporaryPrefix)
     {
     }
 
-    bool count(TileSpill& spill, const TileGlyphs& tail, std::string& error)
+    /** Finds the units from the counts of the glyphs in buckets and those of the tail. */
+    void count(std::vector<std::size_t>& counts, const TileGlyphs& tail)
     {
-        std::vector<std::size_t> counts[2];
-        for (auto& half : counts)
-            half.assign(std::size_t(1) << 3 * _countLevel, 0);
+        const OctreeCube& cube = _writer.getCube();
         const unsigned int shift = 3 * (MORTON_LEVELS - _countLevel);
-        if (!readGlyphs(
-                spill, tail, _writer, 0.0, COUNTED,
-                [&](const TileGlyphs& block)
-                {
-                    forEachCode(block, [&](unsigned int half, std::size_t, uint64_t code)
-                                { ++counts[half][code >> shift]; });
-                },
-                error))
-            return false;
-        _before.assign(counts[0].size() + 1, 0);
-        for (std::size_t i = 0; i < counts[0].size(); ++i)
-            _before[i + 1] = _before[i] + counts[0][i] + counts[1][i];
+        _tailCodes.resize(tail.size());
+        for (std::size_t i = 0; i < tail.size(); ++i)
+        {
+            _tailCodes[i] = cube.code(osg::Vec3d(tail.positions[i]));
+            ++counts[_tailCodes[i] >> shift];
+        }
+        _before.assign(counts.size() + 1, 0);
+        for (std::size_t i = 0; i < counts.size(); ++i)
+            _before[i + 1] = _before[i] + counts[i];
         findUnits(0, 0);
-        return true;
     }
 
     /** Runs of consecutive units of at most the budget together. */
@@ -110,65 +90,54 @@ public:
             glyphs += _units[i].glyphs;
         }
         _partitionStarts.push_back(_units.size());
+        _partitionCodes.push_back(endCode(0, 0));
     }
 
-    bool distribute(TileSpill& spill, const TileGlyphs& tail, const std::string& prefix, std::string& error)
+    /** The buckets in octree order, those of more than the budget sorted into smaller ones. */
+    bool findSources(TileBuckets& buckets, std::string& error)
+    {
+        for (std::size_t b = 0; b < buckets.getNumBuckets(); ++b)
+        {
+            const unsigned int bucketLevel = buckets.getBucketLevel();
+            const uint64_t prefix = buckets.getBucketPrefix(b);
+            if (buckets.getBucketSize(b) <= _budget || bucketLevel >= _countLevel)
+            {
+                if (buckets.getBucketSize(b))
+                    _sources.push_back({&buckets, b, bucketLevel, prefix});
+                continue;
+            }
+            _splits.push_back(std::make_unique<TileBuckets>(
+                _temporaryPrefix + "-" + std::to_string(_splits.size()), buckets.getFormat(),
+                _writer.getCube(), bucketLevel, prefix, std::min(bucketLevel + 3, _countLevel)));
+            TileBuckets& split = *_splits.back();
+            if (!split.isOpen())
+            {
+                error = split.getPath() + ": cannot create a temporary file";
+                return false;
+            }
+            bool added = true;
+            if (!buckets.read(
+                    b,
+                    [&](const TileGlyphs& block) { return added = split.add(block, 0, block.size(), error); },
+                    error) ||
+                !added || !findSources(split, error))
+                return false;
+        }
+        return true;
+    }
+
+    osg::ref_ptr<osg::Node> build(const TileGlyphs& tail, std::string& error)
     {
         for (std::size_t p = 0; p + 1 < _partitionStarts.size(); ++p)
         {
-            _partitions.push_back(spill.createLike(prefix + "-" + std::to_string(p)));
-            if (!_partitions.back()->isOpen())
-            {
-                error = _partitions.back()->getPath() + ": cannot create a temporary file";
-                return false;
-            }
-        }
-        std::vector<std::vector<unsigned int>> indices(_partitions.size());
-        std::vector<unsigned int> partitionOf;
-        bool written = true;
-        if (!readGlyphs(
-                spill, tail, _writer, COUNTED, DISTRIBUTED,
-                [&](const TileGlyphs& block)
-                {
-                    for (auto& list : indices)
-                        list.clear();
-                    partitionOf.resize(block.size());
-                    forEachCode(
-                        block,
-                        [&](unsigned int, std::size_t i, uint64_t code)
-                        {
-                            partitionOf[i] = static_cast<unsigned int>(
-                                std::upper_bound(_partitionCodes.begin(), _partitionCodes.end(), code) -
-                                _partitionCodes.begin() - 1);
-                        });
-                    for (std::size_t i = 0; i < block.size(); ++i)
-                        indices[partitionOf[i]].push_back(static_cast<unsigned int>(i));
-                    for (std::size_t p = 0; p < indices.size() && written; ++p)
-                        written = _partitions[p]->append(block, indices[p], error);
-                },
-                error))
-            return false;
-        return written;
-    }
-
-    osg::ref_ptr<osg::Node> build(const osg::Vec3d& origin, std::string& error)
-    {
-        for (std::size_t p = 0; p < _partitions.size(); ++p)
-        {
             TileGlyphs glyphs;
-            glyphs.origin = origin;
-            const std::size_t count = _partitions[p]->size();
-            if (!_partitions[p]->read(
-                    [&glyphs, count](const TileGlyphs& block)
-                    {
-                        if (glyphs.positions.capacity() < count)
-                            glyphs.reserve(count, block);
-                        glyphs.append(block);
-                        return true;
-                    },
-                    error))
+            glyphs.origin = tail.origin;
+            std::size_t count = 0;
+            for (std::size_t u = _partitionStarts[p]; u < _partitionStarts[p + 1]; ++u)
+                count += _units[u].glyphs;
+            _format.reserve(glyphs, count);
+            if (!gather(_partitionCodes[p], _partitionCodes[p + 1], tail, glyphs, error))
                 return nullptr;
-            _partitions[p].reset();
             TileTree tree(glyphs, _writer);
             for (std::size_t u = _partitionStarts[p]; u < _partitionStarts[p + 1]; ++u)
                 if (!addUnit(tree, _units[u]))
@@ -187,18 +156,41 @@ public:
     }
 
 private:
-    /** Calls visit(half, i, code) with the Morton code of each glyph i of block: on two threads,
-     * one for each half (0, 1) of the block. */
-    template <typename Visit>
-    void forEachCode(const TileGlyphs& block, const Visit& visit)
+    /** Appends the glyphs with codes in [begin, end) to glyphs: those of the buckets, in octree
+     * order, then those of the tail, each in the order they came. */
+    bool gather(uint64_t begin, uint64_t end, const TileGlyphs& tail, TileGlyphs& glyphs, std::string& error)
     {
         const OctreeCube& cube = _writer.getCube();
-        const auto visitRange = [&](unsigned int half, std::size_t first, std::size_t last)
+        while (_nextSource < _sources.size() &&
+               endCode(_sources[_nextSource].level, _sources[_nextSource].prefix) <= begin)
+            ++_nextSource;
+        for (std::size_t s = _nextSource; s < _sources.size(); ++s)
         {
-            for (std::size_t i = first; i < last; ++i)
-                visit(half, i, cube.code(osg::Vec3d(block.positions[i])));
-        };
-        _writer.getThreads().runHalves(block.size(), visitRange);
+            const Source& source = _sources[s];
+            const uint64_t first = firstCode(source.level, source.prefix);
+            if (first >= end)
+                break;
+            const bool whole = first >= begin && endCode(source.level, source.prefix) <= end;
+            const auto append = [&](const TileGlyphs& block)
+            {
+                if (whole)
+                    glyphs.append(block);
+                else
+                    for (std::size_t i = 0; i < block.size(); ++i)
+                    {
+                        const uint64_t code = cube.code(osg::Vec3d(block.positions[i]));
+                        if (code >= begin && code < end)
+                            glyphs.append(block, i);
+                    }
+                return true;
+            };
+            if (!source.buckets->read(source.bucket, append, error))
+                return false;
+        }
+        for (std::size_t i = 0; i < tail.size(); ++i)
+            if (_tailCodes[i] >= begin && _tailCodes[i] < end)
+                glyphs.append(tail, i);
+        return true;
     }
 
     std::size_t glyphsIn(unsigned int level, uint64_t prefix) const
@@ -269,29 +261,46 @@ private:
     }
 
     TileWriter& _writer;
+    TileRecordFormat _format;
     std::size_t _budget;
     unsigned int _countLevel;
     std::vector<std::size_t> _before; // glyphs before each node of the count level
     std::vector<Unit> _units;         // in octree order
     std::vector<std::size_t> _partitionStarts;
     std::vector<uint64_t> _partitionCodes;
-    std::vector<std::unique_ptr<TileSpill>> _partitions;
+    std::string _temporaryPrefix;
+    std::vector<uint64_t> _tailCodes;
+    std::vector<Source> _sources; // in octree order
+    std::size_t _nextSource = 0;  // the first that the next partition may read
+    std::vector<std::unique_ptr<TileBuckets>> _splits;
     std::vector<OpenNode> _open; // the nodes above the current unit, root first
     osg::ref_ptr<osg::Node> _root;
 };
 
 }
 
-osg::ref_ptr<osg::Node> osgGlyphsTiles::detail::buildStreamedTree(TileSpill& spill, const TileGlyphs& tail,
-                                                                  TileWriter& writer, std::size_t budget,
-                                                                  const std::string& temporaryPrefix,
-                                                                  std::string& error)
+unsigned int osgGlyphsTiles::detail::streamCountLevel(const TileOptions& options)
 {
-    StreamedTree tree(writer, budget);
-    if (!tree.count(spill, tail, error))
-        return nullptr;
+    unsigned int levels = 0;
+    while ((2u << levels) <= options.cellsPerAxis)
+        ++levels;
+    return std::min(levels, MAX_COUNT_LEVEL);
+}
+
+unsigned int osgGlyphsTiles::detail::streamBucketLevel(const TileOptions& options)
+{
+    return std::min(3u, streamCountLevel(options));
+}
+
+osg::ref_ptr<osg::Node>
+osgGlyphsTiles::detail::buildStreamedTree(TileBuckets& buckets, std::vector<std::size_t> counts,
+                                          const TileGlyphs& tail, TileWriter& writer, std::size_t budget,
+                                          const std::string& temporaryPrefix, std::string& error)
+{
+    StreamedTree tree(writer, buckets.getFormat(), budget, temporaryPrefix);
+    tree.count(counts, tail);
     tree.partition();
-    if (!tree.distribute(spill, tail, temporaryPrefix, error))
+    if (!tree.findSources(buckets, error))
         return nullptr;
-    return tree.build(tail.origin, error);
+    return tree.build(tail, error);
 }

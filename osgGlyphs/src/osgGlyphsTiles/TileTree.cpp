@@ -311,14 +311,14 @@ osg::ref_ptr<osg::Node> TileTree::buildNode(unsigned int level, uint64_t prefix,
     // its own while one is free: all of them only read the glyphs.
     TileGlyphs representatives;
     osg::BoundingBoxd box;
-    std::thread own = _writer.getThreads().start(
+    TileThreads::TaskHandle own = _writer.getThreads().start(
         [&]
         {
             addRepresentatives(level, begin, end, representatives);
             box = boxOf(begin, end);
         });
     osg::ref_ptr<osg::Node> octants[8];
-    std::thread threads[8];
+    TileThreads::TaskHandle threads[8];
     std::size_t first = begin;
     for (uint64_t octant = 0; octant < 8; ++octant)
     {
