@@ -11,6 +11,9 @@ namespace
 
 const int MORTON_BITS = 10; // per axis: a 1024^3 grid over the cloud
 
+/** The most glyphs whose boxes are held while their chunks are made (24 MiB). */
+const unsigned int MAX_HELD_BOXES = 1u << 20;
+
 /** Spreads the low 10 bits of v to every third bit. */
 uint32_t spreadBits(uint32_t v)
 {
@@ -60,14 +63,21 @@ GlyphChunks osgGlyphs::detail::buildGlyphChunks(unsigned int numGlyphs,
                                                 const std::function<osg::BoundingBox(unsigned int)>& glyphBox,
                                                 unsigned int maxChunkSize)
 {
-    // Each glyph's box is computed twice, both times in the glyphs' own order (memory order),
-    // rather than held (24 bytes a glyph): for its centre, then for its chunk's box.
+    // The boxes of a small cloud (a tile) are held; those of a large one are computed twice, both
+    // times in the glyphs' own order (memory order), rather than held (24 bytes a glyph): for
+    // their centres, then for their chunks' boxes.
+    const bool holdBoxes = numGlyphs <= MAX_HELD_BOXES;
+    std::vector<osg::BoundingBox> boxes(holdBoxes ? numGlyphs : 0);
     std::vector<uint32_t> ids;
     std::vector<osg::Vec3f> centres;
+    ids.reserve(numGlyphs);
+    centres.reserve(numGlyphs);
     osg::BoundingBox centreBox;
     for (unsigned int i = 0; i < numGlyphs; ++i)
     {
         const osg::BoundingBox box = glyphBox(i);
+        if (holdBoxes)
+            boxes[i] = box;
         if (!box.valid())
             continue;
         ids.push_back(i);
@@ -99,17 +109,23 @@ GlyphChunks osgGlyphs::detail::buildGlyphChunks(unsigned int numGlyphs,
 
     GlyphChunks result;
     Splitter{keys, std::max(1u, maxChunkSize), result.chunks}.split(0, keys.size(), 0);
+    result.ids.resize(keys.size());
+    for (size_t k = 0; k < keys.size(); ++k)
+        result.ids[k] = uint32_t(keys[k] & 0xffffffffu);
+    keys = std::vector<uint64_t>();
+    if (holdBoxes)
+    {
+        for (GlyphChunk& chunk : result.chunks)
+            for (unsigned int k = chunk.first; k < chunk.first + chunk.count; ++k)
+                chunk.box.expandBy(boxes[result.ids[k]]);
+        return result;
+    }
     const uint32_t NO_CHUNK = 0xffffffffu;
     std::vector<uint32_t> chunkOf(numGlyphs, NO_CHUNK);
-    result.ids.resize(keys.size());
     for (uint32_t c = 0; c < result.chunks.size(); ++c)
-        for (size_t k = result.chunks[c].first; k < result.chunks[c].first + result.chunks[c].count; ++k)
-        {
-            const uint32_t id = uint32_t(keys[k] & 0xffffffffu);
-            result.ids[k] = id;
-            chunkOf[id] = c;
-        }
-    keys = std::vector<uint64_t>();
+        for (unsigned int k = result.chunks[c].first; k < result.chunks[c].first + result.chunks[c].count;
+             ++k)
+            chunkOf[result.ids[k]] = c;
     for (unsigned int i = 0; i < numGlyphs; ++i)
         if (chunkOf[i] != NO_CHUNK)
             result.chunks[chunkOf[i]].box.expandBy(glyphBox(i));

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <vector>
 
 using osgGlyphs::GlyphCloud;
 
@@ -168,9 +169,23 @@ static bool scalarsAreSteps(const GlyphCloud& cloud)
                        });
 }
 
+/** What checkScalars() found, for checkScalarSteps() right after it on the same cloud: each
+ * looks at every scalar. */
+struct StepsCheck
+{
+    const GlyphCloud* cloud = nullptr;
+    const osg::FloatArray* scalars = nullptr;
+    unsigned int modified = 0;
+    bool steps = false;
+};
+static thread_local StepsCheck lastStepsCheck;
+
 static bool checkScalars(const GlyphCloud& cloud)
 {
-    return cloud.getScalars() && !scalarsAreSteps(cloud);
+    const osg::FloatArray* scalars = cloud.getScalars();
+    const bool steps = scalarsAreSteps(cloud);
+    lastStepsCheck = {&cloud, scalars, scalars ? scalars->getModifiedCount() : 0u, steps};
+    return scalars && !steps;
 }
 
 static bool readScalars(osgDB::InputStream& is, GlyphCloud& cloud)
@@ -188,6 +203,12 @@ static bool writeScalars(osgDB::OutputStream& os, const GlyphCloud& cloud)
 
 static bool checkScalarSteps(const GlyphCloud& cloud)
 {
+    const osg::FloatArray* scalars = cloud.getScalars();
+    const StepsCheck last = lastStepsCheck;
+    lastStepsCheck = StepsCheck();
+    if (last.cloud == &cloud && last.scalars == scalars && scalars &&
+        last.modified == scalars->getModifiedCount())
+        return last.steps;
     return scalarsAreSteps(cloud);
 }
 
@@ -219,8 +240,18 @@ static bool writeScalarSteps(osgDB::OutputStream& os, const GlyphCloud& cloud)
     os << range;
     os.writeSize(static_cast<unsigned int>(scalars.size()));
     os << os.BEGIN_BRACKET << std::endl;
-    for (float s : scalars)
-        os << static_cast<unsigned short>(GlyphCloud::quantiseScalar(s, range));
+    if (os.isBinary())
+    {
+        // The bytes of one unsigned short at a time, in one call.
+        std::vector<unsigned short> steps(scalars.size());
+        for (std::size_t i = 0; i < steps.size(); ++i)
+            steps[i] = static_cast<unsigned short>(GlyphCloud::quantiseScalar(scalars[i], range));
+        os.writeCharArray(reinterpret_cast<const char*>(steps.data()),
+                          static_cast<unsigned int>(steps.size() * sizeof(unsigned short)));
+    }
+    else
+        for (float s : scalars)
+            os << static_cast<unsigned short>(GlyphCloud::quantiseScalar(s, range));
     os << os.END_BRACKET << std::endl;
     return true;
 }
