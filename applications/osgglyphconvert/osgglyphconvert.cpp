@@ -293,11 +293,36 @@ ReadPoints readPoints(const ConvertOptions& options, const osgGlyphsData::PointS
     return points;
 }
 
+/** The box of a file's positions, gathered share by share over a pass: the previous pass's is the
+ * whole file's. Invalid when the shares' positions have different origins. */
+struct PassBounds
+{
+    osg::BoundingBoxd previous, current;
+    osg::Vec3d previousOrigin, currentOrigin;
+    bool sharedOrigin = true;
+
+    void add(const osg::Vec3d& origin, const osg::BoundingBoxd& box)
+    {
+        if (!current.valid() && sharedOrigin)
+            currentOrigin = origin;
+        sharedOrigin = sharedOrigin && origin == currentOrigin;
+        current.expandBy(box);
+    }
+
+    void endPass()
+    {
+        previous = sharedOrigin ? current : osg::BoundingBoxd();
+        previousOrigin = currentOrigin;
+        current.init();
+        sharedOrigin = true;
+    }
+};
+
 /** Adds the glyphs of one frame of points read from a file, or from one share of it under
  * shares (which must then be given beginShare() for it), to builder, which is made from the
  * first. */
 bool addPoints(const ConvertOptions& options, const ReadPoints& points, SequentialShares* shares,
-               osg::ref_ptr<osgGlyphsTiles::TileBuilder>& builder, std::string& error)
+               PassBounds* bounds, osg::ref_ptr<osgGlyphsTiles::TileBuilder>& builder, std::string& error)
 {
     osgGlyphsData::PointDataset* dataset = points.dataset.get();
     error = points.error;
@@ -314,6 +339,8 @@ bool addPoints(const ConvertOptions& options, const ReadPoints& points, Sequenti
     mapper.setCulling(osgGlyphs::GlyphCulling::Off); // its clouds only carry the glyphs to the builder
     if (!mapper.prepare(*dataset, options.frame, error))
         return false;
+    if (bounds)
+        bounds->add(mapper.getPositionOrigin(), mapper.getPositionBounds());
     // Under shares, a pass that has already given the mapping other values than the previous pass
     // is not the last, and its glyphs are not kept.
     if (shares && !shares->isSettled())
@@ -326,9 +353,10 @@ bool addPoints(const ConvertOptions& options, const ReadPoints& points, Sequenti
         std::cerr << PROGRAM << ": " << mapper.describe() << std::endl;
         builder = new osgGlyphsTiles::TileBuilder(*cloud, options.tiles);
         builder->setColorTitle(mapper.getColorKey().title);
-        // The whole file's box (under shares, from the previous pass): the glyphs past the memory
-        // are sorted into octree nodes as they come.
-        builder->setBounds(mapper.getPositionBounds());
+        // The whole file's box from the previous pass: the glyphs past the memory are sorted
+        // into octree nodes as they come.
+        if (bounds && bounds->previous.valid() && bounds->previousOrigin == mapper.getPositionOrigin())
+            builder->setBounds(bounds->previous);
     }
     if (!builder->addGlyphs(*cloud, error))
     {
@@ -351,8 +379,9 @@ osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildFromFile(const ConvertOptions& op
     if (count == 1)
     {
         progress.start("reading " + options.input);
-        return addPoints(options, readPoints(options, share, &progress), nullptr, builder, error) ? builder
-                                                                                                  : nullptr;
+        return addPoints(options, readPoints(options, share, &progress), nullptr, nullptr, builder, error)
+                   ? builder
+                   : nullptr;
     }
     const auto readShare = [&options, share](unsigned int index)
     {
@@ -361,6 +390,7 @@ osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildFromFile(const ConvertOptions& op
         return std::async(std::launch::async, readPoints, std::cref(options), part, nullptr);
     };
     osg::ref_ptr<SequentialShares> shares = new SequentialShares(count);
+    PassBounds bounds;
     std::future<ReadPoints> next = readShare(0);
     for (unsigned int pass = 1; pass <= MAX_SHARE_PASSES; ++pass)
     {
@@ -376,7 +406,7 @@ osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildFromFile(const ConvertOptions& op
             else if (!shares->isSettled())
                 next = readShare(0);
             shares->beginShare(index);
-            if (!addPoints(options, points, shares.get(), builder, error))
+            if (!addPoints(options, points, shares.get(), &bounds, builder, error))
                 return nullptr;
             progress.update(double(index + 1) / count);
         }
@@ -387,6 +417,7 @@ osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildFromFile(const ConvertOptions& op
                       << (pass == 1 ? " pass" : " passes") << std::endl;
             return builder;
         }
+        bounds.endPass();
         if (!next.valid())
             next = readShare(0);
     }

@@ -125,6 +125,7 @@ bool GlyphMapper::prepare(const PointDataset& dataset, std::size_t startFrame, s
         return false;
     }
     computeBounds(positions);
+    _positionOrigin = origin;
     computeSizes(*data, positions);
 
     _key = ColorKey();
@@ -309,13 +310,6 @@ void GlyphMapper::computeBounds(const std::vector<osg::Vec3f>& positions)
         if (std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()))
             box.expandBy(osg::Vec3d(p));
     }
-    if (_reduction.valid())
-    {
-        std::vector<double> low(box._min.ptr(), box._min.ptr() + 3), high(box._max.ptr(), box._max.ptr() + 3);
-        _reduction->minimum(low);
-        _reduction->maximum(high);
-        box.set(low[0], low[1], low[2], high[0], high[1], high[2]);
-    }
     _positionBounds = box;
 }
 
@@ -362,7 +356,15 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
         typical = _radius = _options.radius;
     else
     {
-        const osg::BoundingBoxd& box = _positionBounds;
+        osg::BoundingBoxd box = _positionBounds;
+        if (_reduction.valid())
+        {
+            std::vector<double> low(box._min.ptr(), box._min.ptr() + 3),
+                high(box._max.ptr(), box._max.ptr() + 3);
+            _reduction->minimum(low);
+            _reduction->maximum(high);
+            box.set(low[0], low[1], low[2], high[0], high[1], high[2]);
+        }
         const double diagonal = box.valid() ? (box._max - box._min).length() : 0.0;
         const double spacing = _reduction.valid() ? detail::estimateNeighbourDistance(positions, *_reduction)
                                                   : detail::estimateNeighbourDistance(positions);
