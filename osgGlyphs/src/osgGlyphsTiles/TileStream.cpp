@@ -136,9 +136,10 @@ public:
             for (std::size_t u = _partitionStarts[p]; u < _partitionStarts[p + 1]; ++u)
                 count += _units[u].glyphs;
             _format.reserve(glyphs, count);
-            if (!gather(_partitionCodes[p], _partitionCodes[p + 1], tail, glyphs, error))
+            std::vector<std::size_t> runs;
+            if (!gather(_partitionCodes[p], _partitionCodes[p + 1], tail, glyphs, runs, error))
                 return nullptr;
-            TileTree tree(glyphs, _writer);
+            TileTree tree(glyphs, _writer, runs);
             for (std::size_t u = _partitionStarts[p]; u < _partitionStarts[p + 1]; ++u)
                 if (!addUnit(tree, _units[u]))
                 {
@@ -157,8 +158,10 @@ public:
 
 private:
     /** Appends the glyphs with codes in [begin, end) to glyphs: those of the buckets, in octree
-     * order, then those of the tail, each in the order they came. */
-    bool gather(uint64_t begin, uint64_t end, const TileGlyphs& tail, TileGlyphs& glyphs, std::string& error)
+     * order, then those of the tail, each in the order they came. Without a tail, runs are where
+     * the buckets' glyphs start (else none: the tail's glyphs may lie anywhere). */
+    bool gather(uint64_t begin, uint64_t end, const TileGlyphs& tail, TileGlyphs& glyphs,
+                std::vector<std::size_t>& runs, std::string& error)
     {
         const OctreeCube& cube = _writer.getCube();
         while (_nextSource < _sources.size() &&
@@ -184,9 +187,14 @@ private:
                     }
                 return true;
             };
+            runs.push_back(glyphs.size());
             if (!source.buckets->read(source.bucket, append, error))
                 return false;
+            if (runs.back() == glyphs.size())
+                runs.pop_back();
         }
+        if (!_tailCodes.empty())
+            runs.clear();
         for (std::size_t i = 0; i < tail.size(); ++i)
             if (_tailCodes[i] >= begin && _tailCodes[i] < end)
                 glyphs.append(tail, i);

@@ -237,13 +237,13 @@ osg::ref_ptr<GlyphCloud> TileWriter::createCloud(const TileGlyphs& glyphs) const
     return cloud;
 }
 
-TileTree::TileTree(TileGlyphs& glyphs, TileWriter& writer) : _glyphs(glyphs), _writer(writer)
+TileTree::TileTree(TileGlyphs& glyphs, TileWriter& writer, std::vector<std::size_t> runs)
+    : _glyphs(glyphs), _writer(writer)
 {
-    // Two halves keyed and sorted side by side, then merged.
     const OctreeCube& cube = writer.getCube();
     using Keyed = std::pair<uint64_t, unsigned int>;
     std::vector<Keyed> keyed(glyphs.positions.size());
-    const auto sortRange = [&](unsigned int, std::size_t first, std::size_t last)
+    const auto sortRange = [&](std::size_t first, std::size_t last)
     {
         for (std::size_t i = first; i < last; ++i)
             keyed[i] = {cube.code(osg::Vec3d(glyphs.positions[i])), static_cast<unsigned int>(i)};
@@ -251,15 +251,35 @@ TileTree::TileTree(TileGlyphs& glyphs, TileWriter& writer) : _glyphs(glyphs), _w
         osgGlyphs::detail::radixSort(keyed.data() + first, keyed.data() + last, 3 * MORTON_LEVELS,
                                      [](const Keyed& k) { return k.first; });
     };
-    const std::size_t middle = writer.getThreads().runHalves(keyed.size(), sortRange);
     _codes.resize(keyed.size());
     std::vector<unsigned int> order(keyed.size());
-    for (std::size_t i = 0, a = 0, b = middle; i < keyed.size(); ++i)
+    if (runs.empty())
     {
-        const bool fromFirst = b == keyed.size() || (a < middle && keyed[a] < keyed[b]);
-        const std::pair<uint64_t, unsigned int>& next = fromFirst ? keyed[a++] : keyed[b++];
-        _codes[i] = next.first;
-        order[i] = next.second;
+        // Two halves keyed and sorted side by side, then merged.
+        const std::size_t middle = writer.getThreads().runHalves(
+            keyed.size(), [&](unsigned int, std::size_t first, std::size_t last) { sortRange(first, last); });
+        for (std::size_t i = 0, a = 0, b = middle; i < keyed.size(); ++i)
+        {
+            const bool fromFirst = b == keyed.size() || (a < middle && keyed[a] < keyed[b]);
+            const std::pair<uint64_t, unsigned int>& next = fromFirst ? keyed[a++] : keyed[b++];
+            _codes[i] = next.first;
+            order[i] = next.second;
+        }
+    }
+    else
+    {
+        // Each run small enough to sort in cache, and in place already once sorted.
+        runs.push_back(keyed.size());
+        std::vector<TileThreads::TaskHandle> tasks;
+        for (std::size_t r = 0; r + 1 < runs.size(); ++r)
+            tasks.push_back(writer.getThreads().start([&, r] { sortRange(runs[r], runs[r + 1]); }));
+        for (TileThreads::TaskHandle& task : tasks)
+            writer.getThreads().join(task);
+        for (std::size_t i = 0; i < keyed.size(); ++i)
+        {
+            _codes[i] = keyed[i].first;
+            order[i] = keyed[i].second;
+        }
     }
     keyed = {};
     // One array at a time, through a copy: permuting in place, cycle by cycle, reads memory out

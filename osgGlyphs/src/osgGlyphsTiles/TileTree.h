@@ -107,8 +107,10 @@ class TileTree
 {
 public:
     /** Puts the glyphs in the order of their octree (Morton order), which the tiles are cut from:
-     * every later walk over them reads memory in order. */
-    TileTree(TileGlyphs& glyphs, TileWriter& writer);
+     * every later walk over them reads memory in order. Given runs (the first glyph of each), the
+     * glyphs are runs of distinct octree nodes in their octree order, and each run is sorted on
+     * its own. */
+    TileTree(TileGlyphs& glyphs, TileWriter& writer, std::vector<std::size_t> runs = {});
 
     std::size_t size() const { return _codes.size(); }
 
