@@ -125,11 +125,15 @@ TileBuilder::TileBuilder(const GlyphCloud& style, const TileOptions& options)
     _style->setCulling(osgGlyphs::GlyphCulling::Occlusion); // the default, whatever the style's
 }
 
-TileBuilder::~TileBuilder() = default;
+TileBuilder::~TileBuilder()
+{
+    if (_spilled.valid())
+        _spilled.wait();
+}
 
 std::size_t TileBuilder::getNumGlyphs() const
 {
-    return _glyphs->size() + (_spill ? _spill->size() : 0) + (_buckets ? _buckets->size() : 0);
+    return _glyphs->size() + _spilledGlyphs;
 }
 
 bool TileBuilder::setBounds(const osg::BoundingBoxd& box)
@@ -226,16 +230,45 @@ bool TileBuilder::spill(std::string& error)
         _spill.reset();
         return false;
     }
-    if (!(_buckets ? _buckets->add(*_glyphs, 0, _glyphs->size(), error)
-                   : _spill->append(*_glyphs, 0, _glyphs->size(), error)))
+    _spilledGlyphs += _glyphs->size();
+    if (_spill)
+    {
+        if (!_spill->append(*_glyphs, 0, _glyphs->size(), error))
+            return false;
+        _glyphs->clear();
+        return true;
+    }
+    // Sorted on another thread while the next glyphs come, in the arrays of the batch before.
+    if (!finishSpill(error))
         return false;
+    if (!_spilling)
+        _spilling.reset(new TileGlyphs);
+    TileGlyphs& batch = *_spilling;
+    batch.positions.swap(_glyphs->positions);
+    batch.radii.swap(_glyphs->radii);
+    batch.scalars.swap(_glyphs->scalars);
+    batch.colors.swap(_glyphs->colors);
+    batch.vectors.swap(_glyphs->vectors);
     _glyphs->clear();
+    _spilled = std::async(std::launch::async,
+                          [this] { return _buckets->add(*_spilling, 0, _spilling->size(), _spillError); });
     return true;
+}
+
+bool TileBuilder::finishSpill(std::string& error) const
+{
+    if (_spilled.valid())
+        _spillFailed = !_spilled.get() || _spillFailed;
+    if (_spillFailed)
+        error = _spillError;
+    return !_spillFailed;
 }
 
 osg::ref_ptr<osg::Node> TileBuilder::buildTree(TileWriter& writer, std::string& error) const
 {
     const std::size_t budget = _options.maxGlyphsInMemory;
+    if (!finishSpill(error))
+        return nullptr;
     if (_buckets)
         return buildStreamedTree(*_buckets, _bucketCounts, *_glyphs, writer, budget,
                                  _buckets->getPath() + "-split", error);
@@ -300,9 +333,10 @@ bool TileBuilder::write(const std::string& path, std::string& error, const Progr
         return false;
     if ((_spill || _buckets) && !_glyphs->positions.empty())
     {
-        if (!spill(error))
+        if (!spill(error) || !finishSpill(error))
             return false;
         _glyphs->release();
+        _spilling.reset();
     }
     if (osgDB::fileExists(path) && std::remove(path.c_str()) != 0)
     {
