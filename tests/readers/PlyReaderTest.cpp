@@ -2,7 +2,9 @@
 
 #include "ReaderTestUtil.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 using namespace osgGlyphsData;
@@ -102,7 +104,181 @@ std::string simpleBinary(const std::string& vertexCount, std::size_t floats, boo
     return bytes.str();
 }
 
+// Many vertices of every type, more than the reader's buffer holds (1 MiB), in records of 34
+// bytes that straddle its blocks; column "far" starts far from zero and comes back at row 30000,
+// "farf" stays far. The numbers are the same in every encoding (ascii prints them exactly).
+const char* const manyTypes[] = {"char", "uchar", "short", "ushort", "int", "uint", "float", "double"};
+const uint64_t manyRows = 40000;
+
+double manyValue(uint64_t row, std::size_t column)
+{
+    uint64_t h = (row * 10 + column + 1) * 0x9E3779B97F4A7C15ull;
+    h = (h ^ (h >> 31)) * 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 29;
+    const double fraction = static_cast<double>(h % 1000000) / 1024.0;
+    switch (column)
+    {
+    case 0:
+        return static_cast<int8_t>(h);
+    case 1:
+        return static_cast<uint8_t>(h);
+    case 2:
+        return static_cast<int16_t>(h);
+    case 3:
+        return static_cast<uint16_t>(h);
+    case 4:
+        return static_cast<int32_t>(h);
+    case 5:
+        return static_cast<uint32_t>(h);
+    case 6:
+        return row == 7 ? std::numeric_limits<float>::max() : static_cast<float>(fraction - 400.0);
+    case 7:
+        return std::ldexp(static_cast<double>(static_cast<int32_t>(h)), static_cast<int>(h >> 58) - 40);
+    case 8:
+        return (row < 30000 ? 12345678.0 : -2.0) + fraction / 1000.0;
+    default:
+        return static_cast<float>(1000000.0 + fraction);
+    }
+}
+
+std::string manyVertices(const std::string& format)
+{
+    std::string text = "ply\nformat " + format + " 1.0\nelement vertex " + std::to_string(manyRows) + "\n";
+    for (const char* type : manyTypes)
+        text += std::string("property ") + type + " " + type + "\n";
+    Bytes bytes(format == "binary_big_endian");
+    bytes.text(text + "property double far\nproperty float farf\nend_header\n");
+    for (uint64_t row = 0; row < manyRows; ++row)
+    {
+        if (format == "ascii")
+        {
+            char number[32];
+            for (std::size_t c = 0; c < 10; ++c)
+            {
+                std::snprintf(number, sizeof(number), c < 9 ? "%.17g " : "%.17g\n", manyValue(row, c));
+                bytes.text(number);
+            }
+            continue;
+        }
+        bytes.put(static_cast<int8_t>(manyValue(row, 0))).put(static_cast<uint8_t>(manyValue(row, 1)));
+        bytes.put(static_cast<int16_t>(manyValue(row, 2))).put(static_cast<uint16_t>(manyValue(row, 3)));
+        bytes.put(static_cast<int32_t>(manyValue(row, 4))).put(static_cast<uint32_t>(manyValue(row, 5)));
+        bytes.put(static_cast<float>(manyValue(row, 6))).put(manyValue(row, 7));
+        bytes.put(manyValue(row, 8)).put(static_cast<float>(manyValue(row, 9)));
+    }
+    return bytes.str();
+}
+
+// The same columns, origins and stored floats, bit for bit.
+void expectSameFrame(const PointData& expected, const PointData& actual, const std::string& what)
+{
+    ASSERT_EQ(actual.getColumnNames(), expected.getColumnNames()) << what;
+    for (std::size_t c = 0; c < expected.getNumColumns(); ++c)
+    {
+        const std::string& name = expected.getColumnNames()[c];
+        EXPECT_EQ(actual.getColumnOrigin(c), expected.getColumnOrigin(c)) << what << " " << name;
+        const std::vector<float>& want = *expected.getColumn(c);
+        const std::vector<float>& got = *actual.getColumn(c);
+        ASSERT_EQ(got.size(), want.size()) << what << " " << name;
+        const auto differs =
+            std::mismatch(want.begin(), want.end(), got.begin(),
+                          [](float a, float b) { return std::memcmp(&a, &b, sizeof(float)) == 0; });
+        EXPECT_TRUE(differs.first == want.end())
+            << what << " " << name << " row " << (differs.first - want.begin()) << ": " << *differs.second
+            << " instead of " << *differs.first;
+    }
+}
+
+// 3000 vertices x (float), y (double), z (float), with bad values in some places.
+struct BadValue
+{
+    uint64_t row;
+    std::size_t column;
+    double value;
+};
+
+std::string badVertices(bool bigEndian, const std::vector<BadValue>& bad, std::size_t& headerSize)
+{
+    Bytes bytes(bigEndian);
+    bytes.text(std::string("ply\nformat binary_") + (bigEndian ? "big" : "little") +
+               "_endian 1.0\nelement vertex 3000\nproperty float x\nproperty double y\nproperty float "
+               "z\nend_header\n");
+    headerSize = bytes.str().size();
+    for (uint64_t row = 0; row < 3000; ++row)
+    {
+        double values[3] = {row * 0.5, 70000.0 + row, -1.0 * row};
+        for (const BadValue& value : bad)
+        {
+            if (value.row == row)
+                values[value.column] = value.value;
+        }
+        bytes.put(static_cast<float>(values[0])).put(values[1]).put(static_cast<float>(values[2]));
+    }
+    return bytes.str();
+}
+
 } // namespace
+
+TEST(PlyReader, ReadsManyBinaryVerticesAsTheirAsciiText)
+{
+    const std::string ascii = manyVertices("ascii");
+    for (const char* format : {"binary_little_endian", "binary_big_endian"})
+    {
+        const std::string binary = manyVertices(format);
+        for (const PointShare share :
+             {PointShare{0, 1}, PointShare{0, 3}, PointShare{1, 3}, PointShare{2, 3}})
+        {
+            PointReadOptions options;
+            options.share = share;
+            std::vector<std::string> warnings;
+            std::string error;
+            osg::ref_ptr<PointDataset> expected = readWithOptions(ascii, "ply", options, warnings, error);
+            ASSERT_TRUE(expected.valid()) << error;
+            osg::ref_ptr<PointDataset> actual = readWithOptions(binary, "ply", options, warnings, error);
+            ASSERT_TRUE(actual.valid()) << error;
+            expectSameFrame(*expected->getFrame(0), *actual->getFrame(0),
+                            std::string(format) + " share " + std::to_string(share.index) + " of " +
+                                std::to_string(share.count));
+        }
+        // From a pipe: the buffer holds 64 KiB at first, filled piece by piece.
+        PipeBuffer pipe(binary);
+        std::istream stream(&pipe);
+        std::string error;
+        osg::ref_ptr<PointDataset> piped = readPointStream(stream, "ply", "pipe", PointReadOptions(), error);
+        ASSERT_TRUE(piped.valid()) << error;
+        osg::ref_ptr<PointDataset> whole = readString(ascii, "ply", error);
+        ASSERT_TRUE(whole.valid()) << error;
+        expectSameFrame(*whole->getFrame(0), *piped->getFrame(0), std::string(format) + " from a pipe");
+    }
+}
+
+TEST(PlyReader, RejectsTheFirstBadBinaryValueAmongManyAtItsOffset)
+{
+    for (const bool bigEndian : {false, true})
+    {
+        // Row 1500's z comes first, though other columns fail at rows 1600 and 1700.
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        const double inf = std::numeric_limits<double>::infinity();
+        std::size_t headerSize = 0;
+        std::string bytes =
+            badVertices(bigEndian, {{1700, 0, inf}, {1600, 1, nan}, {1500, 2, nan}}, headerSize);
+        EXPECT_EQ(readError(bytes, "ply", "bad.ply"), "bad.ply: byte " +
+                                                          std::to_string(headerSize + 1500 * 16 + 12) +
+                                                          ": column 'z': value nan is not a finite number");
+        bytes = badVertices(bigEndian, {{2900, 0, inf}, {1601, 1, 1e39}}, headerSize);
+        EXPECT_EQ(readError(bytes, "ply", "bad.ply"),
+                  "bad.ply: byte " + std::to_string(headerSize + 1601 * 16 + 4) +
+                      ": column 'y': value 1e+39 is out of the range of a float");
+        // Cut short in a pipe (no size to check first): the last whole record counts.
+        bytes = badVertices(bigEndian, {}, headerSize);
+        PipeBuffer pipe(bytes.substr(0, headerSize + 2345 * 16 + 9));
+        std::istream stream(&pipe);
+        std::string error;
+        EXPECT_FALSE(readPointStream(stream, "ply", "cut.ply", PointReadOptions(), error).valid());
+        EXPECT_EQ(error, "cut.ply: byte " + std::to_string(headerSize + 2345 * 16) +
+                             ": unexpected end of file: element 'vertex' has 2345 of 3000 items");
+    }
+}
 
 TEST(PlyReader, ReadsAsciiWithEveryTypeSkippingFacesEdgesAndLists)
 {

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 namespace osgGlyphsData
 {
@@ -51,60 +52,109 @@ inline bool isIntegerType(ScalarType type)
     return type != ScalarType::Float32 && type != ScalarType::Float64;
 }
 
-/** The raw bits of a value of size bytes, assembled from either byte order (any host). */
-inline uint64_t loadBits(const unsigned char* p, std::size_t size, bool bigEndian)
+/** True on a host that stores the most significant byte first. */
+inline bool isHostBigEndian()
 {
-    uint64_t bits = 0;
-    if (bigEndian)
-    {
-        for (std::size_t i = 0; i < size; ++i)
-            bits = (bits << 8) | p[i];
-    }
-    else
-    {
-        for (std::size_t i = size; i-- > 0;)
-            bits = (bits << 8) | p[i];
-    }
+    const uint16_t one = 1;
+    unsigned char first;
+    std::memcpy(&first, &one, 1);
+    return first == 0;
+}
+
+/** The bytes of bits in the other order. */
+inline uint8_t byteSwap(uint8_t bits)
+{
     return bits;
+}
+inline uint16_t byteSwap(uint16_t bits)
+{
+    return static_cast<uint16_t>(bits << 8 | bits >> 8);
+}
+inline uint32_t byteSwap(uint32_t bits)
+{
+    return bits << 24 | (bits & 0xff00u) << 8 | (bits >> 8 & 0xff00u) | bits >> 24;
+}
+inline uint64_t byteSwap(uint64_t bits)
+{
+    return static_cast<uint64_t>(byteSwap(static_cast<uint32_t>(bits))) << 32 |
+           byteSwap(static_cast<uint32_t>(bits >> 32));
+}
+
+/** The value of type T at p, stored in either byte order (any host): one load, and a byte swap
+ * when the order is not the host's. */
+template <typename T>
+inline T loadScalar(const char* p, bool bigEndian)
+{
+    typedef std::conditional_t<
+        sizeof(T) == 1, uint8_t,
+        std::conditional_t<sizeof(T) == 2, uint16_t, std::conditional_t<sizeof(T) == 4, uint32_t, uint64_t>>>
+        Bits;
+    static_assert(sizeof(Bits) == sizeof(T), "a scalar of 1, 2, 4 or 8 bytes");
+    Bits bits;
+    std::memcpy(&bits, p, sizeof(bits));
+    if (bigEndian != isHostBigEndian())
+        bits = byteSwap(bits);
+    T value;
+    std::memcpy(&value, &bits, sizeof(value));
+    return value;
+}
+
+/** Calls f with a value of the C++ type of type (0): f(int8_t()), f(float()) and so on. */
+template <typename Function>
+inline auto visitScalarType(ScalarType type, Function&& f)
+{
+    switch (type)
+    {
+    case ScalarType::Int8:
+        return f(int8_t());
+    case ScalarType::UInt8:
+        return f(uint8_t());
+    case ScalarType::Int16:
+        return f(int16_t());
+    case ScalarType::UInt16:
+        return f(uint16_t());
+    case ScalarType::Int32:
+        return f(int32_t());
+    case ScalarType::UInt32:
+        return f(uint32_t());
+    case ScalarType::Int64:
+        return f(int64_t());
+    case ScalarType::UInt64:
+        return f(uint64_t());
+    case ScalarType::Float32:
+        return f(float());
+    default:
+        return f(double());
+    }
 }
 
 /** The value at p as a double. */
 inline double decodeScalar(const char* p, ScalarType type, bool bigEndian)
 {
-    const uint64_t bits = loadBits(reinterpret_cast<const unsigned char*>(p), scalarSize(type), bigEndian);
-    switch (type)
-    {
-    case ScalarType::Int8:
-        return static_cast<int8_t>(static_cast<uint8_t>(bits));
-    case ScalarType::UInt8:
-        return static_cast<uint8_t>(bits);
-    case ScalarType::Int16:
-        return static_cast<int16_t>(static_cast<uint16_t>(bits));
-    case ScalarType::UInt16:
-        return static_cast<uint16_t>(bits);
-    case ScalarType::Int32:
-        return static_cast<int32_t>(static_cast<uint32_t>(bits));
-    case ScalarType::UInt32:
-        return static_cast<uint32_t>(bits);
-    case ScalarType::Int64:
-        return static_cast<double>(static_cast<int64_t>(bits));
-    case ScalarType::UInt64:
-        return static_cast<double>(bits);
-    case ScalarType::Float32:
-    {
-        const uint32_t narrow = static_cast<uint32_t>(bits);
-        float value;
-        std::memcpy(&value, &narrow, sizeof(value));
-        return value;
-    }
-    case ScalarType::Float64:
-    {
-        double value;
-        std::memcpy(&value, &bits, sizeof(value));
-        return value;
-    }
-    }
-    return 0.0;
+    return visitScalarType(type, [&](auto zero)
+                           { return static_cast<double>(loadScalar<decltype(zero)>(p, bigEndian)); });
+}
+
+/** The values at first, first + stride, ... (count of them) as doubles, into out. */
+inline void decodeScalars(const char* first, std::size_t stride, std::size_t count, ScalarType type,
+                          bool bigEndian, double* out)
+{
+    visitScalarType(type,
+                    [&](auto zero)
+                    {
+                        typedef decltype(zero) T;
+                        // The byte order as a constant in each loop: no test per value.
+                        if (bigEndian)
+                        {
+                            for (std::size_t i = 0; i < count; ++i)
+                                out[i] = static_cast<double>(loadScalar<T>(first + i * stride, true));
+                        }
+                        else
+                        {
+                            for (std::size_t i = 0; i < count; ++i)
+                                out[i] = static_cast<double>(loadScalar<T>(first + i * stride, false));
+                        }
+                    });
 }
 
 /** An integer value at p (list counts): false when it is negative or not integral. */

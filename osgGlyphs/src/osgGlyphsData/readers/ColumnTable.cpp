@@ -20,6 +20,14 @@ bool withinFloatRange(double value)
     return std::abs(value) <= std::numeric_limits<float>::max(); // false for NaN
 }
 
+// Whether value takes a column with that origin back to plain values: it is farther from the
+// origin than from zero, or its offset is out of the range of a float.
+bool needsPlainValues(double origin, double value)
+{
+    const double offset = value - origin;
+    return origin != 0.0 && (std::abs(offset) > std::abs(value) || !withinFloatRange(offset));
+}
+
 // The atomic number of a species label: a symbol, or the number itself; 0 when unknown.
 unsigned int elementNumber(const std::string& label)
 {
@@ -165,6 +173,15 @@ uint64_t ColumnTable::getNextKeptRow(uint64_t row, uint64_t end) const
     return std::min(next, end);
 }
 
+uint64_t ColumnTable::getKeptRun(uint64_t row, uint64_t end) const
+{
+    if (row >= end || !keeps(row))
+        return 0;
+    if (_hasRowCount)
+        return std::min(_range.end, end) - row;
+    return _share.count == 1 ? end - row : 1;
+}
+
 void ColumnTable::skipRows(uint64_t count)
 {
     for (Column& column : _columns)
@@ -254,8 +271,7 @@ void ColumnTable::appendNumber(Column& column, double value)
 {
     if (!column.originChosen)
         chooseOrigin(column, value);
-    const double offset = value - column.origin;
-    if (column.origin != 0.0 && (std::abs(offset) > std::abs(value) || !withinFloatRange(offset)))
+    if (needsPlainValues(column.origin, value))
     {
         // Values farther from the origin than from zero: the origin no longer helps, the column
         // goes back to plain values.
@@ -304,6 +320,45 @@ void ColumnTable::appendValue(std::size_t index, double value, uint64_t offset)
         _scanner.failAtByte(offset, text.str());
     }
     appendNumber(column, value);
+}
+
+std::size_t ColumnTable::appendRows(const double* values, std::size_t rows)
+{
+    if (_columns.empty())
+        return 0;
+    const uint64_t row = _columns[0].seen;
+    const std::size_t size = _columns[0].values.size();
+    for (const Column& column : _columns)
+    {
+        if (column.kind != Number || !column.originChosen || column.seen != row ||
+            column.values.size() != size)
+            return 0;
+    }
+    // Row 0 chooses the origins: appendValue() appends it.
+    std::size_t done = row == 0 ? 0 : static_cast<std::size_t>(getKeptRun(row, row + rows));
+    for (std::size_t c = 0; c < _columns.size() && done > 0; ++c)
+    {
+        Column& column = _columns[c];
+        const double origin = column.origin;
+        const double* in = values + c * rows;
+        column.values.resize(size + done);
+        float* out = column.values.data() + size;
+        for (std::size_t r = 0; r < done; ++r)
+        {
+            if (!withinFloatRange(in[r]) || needsPlainValues(origin, in[r]))
+            {
+                done = r; // the rows before it in the other columns too
+                break;
+            }
+            out[r] = static_cast<float>(in[r] - origin);
+        }
+    }
+    for (Column& column : _columns)
+    {
+        column.values.resize(size + done);
+        column.seen += done;
+    }
+    return done;
 }
 
 osg::ref_ptr<PointData> ColumnTable::finish()

@@ -96,8 +96,18 @@ public:
     /** Appends one binary value read at offset. */
     void appendValue(std::size_t column, double value, uint64_t offset);
 
+    /** Appends rows consecutive rows of binary values, given column after column: values[c * rows
+     * + r] is row r of column c. Appends the leading rows whose values need nothing but storing
+     * (no failure, no change of origin; rows the table keeps, after row 0) and returns how many:
+     * the caller appends the next row with appendValue(). All columns must be Number columns at
+     * the same row. */
+    std::size_t appendRows(const double* values, std::size_t rows);
+
     /** Whether the table keeps row (of the file, from 0): it is in the share. */
     bool keepsRow(uint64_t row) const { return keeps(row); }
+
+    /** How many rows from row on (before end) the table keeps one after the other. */
+    uint64_t getKeptRun(uint64_t row, uint64_t end) const;
 
     /** The first row from row on (at most end) that the table keeps. */
     uint64_t getNextKeptRow(uint64_t row, uint64_t end) const;

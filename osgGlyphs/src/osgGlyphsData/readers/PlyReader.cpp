@@ -6,6 +6,7 @@
 #include "Fields.h"
 #include "Readers.h"
 
+#include <algorithm>
 #include <limits>
 #include <set>
 
@@ -221,14 +222,18 @@ public:
                 failEnd(element, (_scanner.getOffset() - start) / element.fixedSize);
             return;
         }
-        for (uint64_t item = 0; item < element.count; ++item)
+        for (uint64_t item = 0; item < element.count;)
         {
             if (element.hasLists)
-                readItem(element, item);
-            else if (item == 0 || _table.keepsRow(item))
-                readRecord(element, item);
+                readItem(element, item++);
+            else if (item == 0)
+                readRecord(element, item++); // in every share: it gives the columns their origins
+            else if (!_table.keepsRow(item))
+                item = skipRecords(element, item);
+            else if (const uint64_t done = readRecords(element, item))
+                item += done;
             else
-                item = skipRecords(element, item) - 1;
+                readRecord(element, item++);
         }
     }
 
@@ -255,6 +260,31 @@ private:
             at += scalarSize(property.type);
         }
         _scanner.consume(element.fixedSize);
+    }
+
+    // Fixed-size vertex records from item on, as many as the table keeps one after the other and
+    // the scanner holds (at most BlockValues values), decoded column by column and appended at
+    // once; returns how many. 0 when record item has to be read value by value (readRecord()).
+    uint64_t readRecords(const Element& element, uint64_t item)
+    {
+        const char* records = _scanner.peekBytes(element.fixedSize);
+        if (!records)
+            failEnd(element, item);
+        const std::size_t rows = static_cast<std::size_t>(
+            std::min<uint64_t>({_scanner.getAvailableBytes() / element.fixedSize,
+                                std::max<uint64_t>(BlockValues / element.properties.size(), 1),
+                                _table.getKeptRun(item, element.count)}));
+        _values.resize(rows * element.properties.size());
+        std::size_t at = 0;
+        for (const Property& property : element.properties)
+        {
+            decodeScalars(records + at, element.fixedSize, rows, property.type, _bigEndian,
+                          _values.data() + property.column * rows);
+            at += scalarSize(property.type);
+        }
+        const std::size_t done = _table.appendRows(_values.data(), rows);
+        _scanner.consume(done * element.fixedSize);
+        return done;
     }
 
     // Fixed-size vertex records from item up to the next the share holds (or the end), unread;
@@ -304,9 +334,13 @@ private:
         }
     }
 
+    // Values decoded at once: 32 KiB.
+    static constexpr std::size_t BlockValues = 4096;
+
     TextScanner& _scanner;
     ColumnTable& _table;
     bool _bigEndian;
+    std::vector<double> _values; // of readRecords(), column after column
 };
 
 void readAsciiItem(TextScanner& scanner, ColumnTable& table, const Element& element, std::string_view line,
