@@ -52,6 +52,10 @@ std::string temporaryPrefix(const std::string& directory)
         .string();
 }
 
+/** Past the memory, the glyphs go into the temporary file in batches of this share of it (two at
+ * a time in memory: one being sorted into buckets while the next fills). */
+const std::size_t SPILL_BATCHES = 8;
+
 /** The share of the progress of writing that sorting spilled glyphs into buckets takes (measured:
  * about a tenth of the time). */
 const double SORTED_SHARE = 0.1;
@@ -185,29 +189,45 @@ bool TileBuilder::addGlyphs(const GlyphCloud& cloud, std::string& error)
             return false;
         }
     }
-    for (std::size_t i = 0; i < count; ++i)
+    // In slices: once past the memory, a batch at a time goes into the temporary file.
+    for (std::size_t begin = 0; begin < count;)
     {
-        glyphs.positions.push_back(osg::Vec3f(osg::Vec3d((*positions)[i]) + shift));
-        glyphs.radii.push_back(radii ? (*radii)[i] : cloud.getRadius());
-        _box.expandBy(osg::Vec3d(glyphs.positions.back()));
-    }
-    if (mode == GlyphColorMode::Scalar)
-        for (std::size_t i = 0; i < count; ++i)
+        const std::size_t limit = _spilledGlyphs ? spillBatch() : _options.maxGlyphsInMemory;
+        const std::size_t end =
+            std::min(count, begin + std::max<std::size_t>(limit - std::min(limit, glyphs.size()), 1));
+        for (std::size_t i = begin; i < end; ++i)
         {
-            const float value = (*scalars)[i];
-            if (std::isfinite(value))
-            {
-                const bool first = glyphs.scalarMin > glyphs.scalarMax;
-                glyphs.scalarMin = first ? value : std::min(glyphs.scalarMin, value);
-                glyphs.scalarMax = first ? value : std::max(glyphs.scalarMax, value);
-            }
-            glyphs.scalars.push_back(value);
+            glyphs.positions.push_back(osg::Vec3f(osg::Vec3d((*positions)[i]) + shift));
+            glyphs.radii.push_back(radii ? (*radii)[i] : cloud.getRadius());
+            _box.expandBy(osg::Vec3d(glyphs.positions.back()));
         }
-    if (mode == GlyphColorMode::RGBA)
-        glyphs.colors.insert(glyphs.colors.end(), colors->begin(), colors->begin() + count);
-    if (vectors)
-        glyphs.vectors.insert(glyphs.vectors.end(), vectorArray->begin(), vectorArray->begin() + count);
-    return glyphs.size() < _options.maxGlyphsInMemory || spill(error);
+        if (mode == GlyphColorMode::Scalar)
+            for (std::size_t i = begin; i < end; ++i)
+            {
+                const float value = (*scalars)[i];
+                if (std::isfinite(value))
+                {
+                    const bool first = glyphs.scalarMin > glyphs.scalarMax;
+                    glyphs.scalarMin = first ? value : std::min(glyphs.scalarMin, value);
+                    glyphs.scalarMax = first ? value : std::max(glyphs.scalarMax, value);
+                }
+                glyphs.scalars.push_back(value);
+            }
+        if (mode == GlyphColorMode::RGBA)
+            glyphs.colors.insert(glyphs.colors.end(), colors->begin() + begin, colors->begin() + end);
+        if (vectors)
+            glyphs.vectors.insert(glyphs.vectors.end(), vectorArray->begin() + begin,
+                                  vectorArray->begin() + end);
+        if (glyphs.size() >= limit && !spill(error))
+            return false;
+        begin = end;
+    }
+    return true;
+}
+
+std::size_t TileBuilder::spillBatch() const
+{
+    return std::max<std::size_t>(_options.maxGlyphsInMemory / SPILL_BATCHES, 1);
 }
 
 bool TileBuilder::spill(std::string& error)
