@@ -243,6 +243,9 @@ osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildRandom(const ConvertOptions& opti
     osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder =
         new osgGlyphsTiles::TileBuilder(*cloud, options.tiles);
     builder->setColorTitle("random value");
+    // Every random position lies in the unit cube: the glyphs past the memory are sorted into
+    // octree nodes as they come.
+    builder->setBounds(osg::BoundingBoxd(0.0, 0.0, 0.0, 1.0, 1.0, 1.0));
     for (unsigned long long first = 0; first < options.randomCount; first += RANDOM_BATCH)
     {
         // The next batch is made while this one is added.
