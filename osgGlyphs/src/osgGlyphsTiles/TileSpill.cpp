@@ -41,43 +41,20 @@ TileRecordFormat::TileRecordFormat(const TileGlyphs& like)
 
 void TileRecordFormat::pack(const TileGlyphs& glyphs, std::size_t i, unsigned char* record) const
 {
-    record = put(record, glyphs.positions[i]);
-    record = put(record, glyphs.radii[i]);
-    if (_scalars)
-        record = put(record, glyphs.scalars[i]);
-    if (_colors)
-        record = put(record, glyphs.colors[i]);
-    if (_vectors)
-        put(record, glyphs.vectors[i]);
+    forEachArray(glyphs, [&](const auto& values) { record = put(record, values[i]); });
 }
 
 void TileRecordFormat::reserve(TileGlyphs& glyphs, std::size_t count) const
 {
-    glyphs.positions.reserve(count);
-    glyphs.radii.reserve(count);
-    glyphs.scalars.reserve(_scalars ? count : 0);
-    glyphs.colors.reserve(_colors ? count : 0);
-    glyphs.vectors.reserve(_vectors ? count : 0);
+    forEachArray(glyphs, [count](auto& values) { values.reserve(count); });
 }
 
 void TileRecordFormat::unpack(const unsigned char* bytes, std::size_t count, TileGlyphs& glyphs) const
 {
-    glyphs.positions.resize(count);
-    glyphs.radii.resize(count);
-    glyphs.scalars.resize(_scalars ? count : 0);
-    glyphs.colors.resize(_colors ? count : 0);
-    glyphs.vectors.resize(_vectors ? count : 0);
+    glyphs.clear();
+    forEachArray(glyphs, [count](auto& values) { values.resize(count); });
     for (std::size_t i = 0; i < count; ++i)
-    {
-        bytes = take(bytes, glyphs.positions[i]);
-        bytes = take(bytes, glyphs.radii[i]);
-        if (_scalars)
-            bytes = take(bytes, glyphs.scalars[i]);
-        if (_colors)
-            bytes = take(bytes, glyphs.colors[i]);
-        if (_vectors)
-            bytes = take(bytes, glyphs.vectors[i]);
-    }
+        forEachArray(glyphs, [&](auto& values) { bytes = take(bytes, values[i]); });
 }
 
 TileSpill::TileSpill(const std::string& path, const TileRecordFormat& format)

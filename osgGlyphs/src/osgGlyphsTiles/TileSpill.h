@@ -34,6 +34,20 @@ public:
     void unpack(const unsigned char* bytes, std::size_t count, TileGlyphs& glyphs) const;
 
 private:
+    /** Calls visit with each array of glyphs that a record holds a value of, in the record's order. */
+    template <typename Glyphs, typename Visit>
+    void forEachArray(Glyphs& glyphs, const Visit& visit) const
+    {
+        visit(glyphs.positions);
+        visit(glyphs.radii);
+        if (_scalars)
+            visit(glyphs.scalars);
+        if (_colors)
+            visit(glyphs.colors);
+        if (_vectors)
+            visit(glyphs.vectors);
+    }
+
     bool _scalars, _colors, _vectors;
     std::size_t _size;
 };
