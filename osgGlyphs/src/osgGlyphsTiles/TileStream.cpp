@@ -158,46 +158,40 @@ public:
 
 private:
     /** Appends the glyphs with codes in [begin, end) to glyphs: those of the buckets, in octree
-     * order, then those of the tail, each in the order they came. Without a tail, runs are where
-     * the buckets' glyphs start (else none: the tail's glyphs may lie anywhere). */
+     * order, then those of the tail, each in the order they came. A bucket lies in one unit (a
+     * unit is the largest node of at most the budget, or a node at the count level, and a bucket
+     * is a node of at most the budget, or at the count level), so in one partition. Without a
+     * tail, runs are where the buckets' glyphs start (else none: the tail's glyphs may lie
+     * anywhere). */
     bool gather(uint64_t begin, uint64_t end, const TileGlyphs& tail, TileGlyphs& glyphs,
                 std::vector<std::size_t>& runs, std::string& error)
     {
-        const OctreeCube& cube = _writer.getCube();
-        while (_nextSource < _sources.size() &&
-               endCode(_sources[_nextSource].level, _sources[_nextSource].prefix) <= begin)
-            ++_nextSource;
-        for (std::size_t s = _nextSource; s < _sources.size(); ++s)
+        for (; _nextSource < _sources.size(); ++_nextSource)
         {
-            const Source& source = _sources[s];
+            const Source& source = _sources[_nextSource];
             const uint64_t first = firstCode(source.level, source.prefix);
             if (first >= end)
                 break;
-            const bool whole = first >= begin && endCode(source.level, source.prefix) <= end;
-            const auto append = [&](const TileGlyphs& block)
-            {
-                if (whole)
-                    glyphs.append(block);
-                else
-                    for (std::size_t i = 0; i < block.size(); ++i)
-                    {
-                        const uint64_t code = cube.code(osg::Vec3d(block.positions[i]));
-                        if (code >= begin && code < end)
-                            glyphs.append(block, i);
-                    }
-                return true;
-            };
             runs.push_back(glyphs.size());
-            if (!source.buckets->read(source.bucket, append, error))
+            if (first < begin || !source.buckets->read(
+                                     source.bucket,
+                                     [&glyphs](const TileGlyphs& block)
+                                     {
+                                         glyphs.append(block);
+                                         return true;
+                                     },
+                                     error))
+            {
+                if (error.empty())
+                    error = "a bucket of the temporary files lies across two partitions";
                 return false;
-            if (runs.back() == glyphs.size())
-                runs.pop_back();
+            }
         }
-        if (!_tailCodes.empty())
-            runs.clear();
         for (std::size_t i = 0; i < tail.size(); ++i)
             if (_tailCodes[i] >= begin && _tailCodes[i] < end)
                 glyphs.append(tail, i);
+        if (!_tailCodes.empty())
+            runs.clear();
         return true;
     }
 
@@ -279,7 +273,7 @@ private:
     std::string _temporaryPrefix;
     std::vector<uint64_t> _tailCodes;
     std::vector<Source> _sources; // in octree order
-    std::size_t _nextSource = 0;  // the first that the next partition may read
+    std::size_t _nextSource = 0;  // the first that the next partition reads
     std::vector<std::unique_ptr<TileBuckets>> _splits;
     std::vector<OpenNode> _open; // the nodes above the current unit, root first
     osg::ref_ptr<osg::Node> _root;
