@@ -113,7 +113,9 @@ std::string writeArchive(const Dataset& dataset, std::size_t maxInMemory, const 
     osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder =
         new osgGlyphsTiles::TileBuilder(*randomBatch(dataset.shape, dataset.rgba, 1), options);
     if (bounds.valid())
+    {
         EXPECT_TRUE(builder->setBounds(bounds));
+    }
     std::string error;
     for (unsigned int first = 0; first < GLYPHS; first += BATCH)
         EXPECT_TRUE(builder->addGlyphs(
