@@ -232,23 +232,21 @@ std::size_t TileBuilder::spillBatch() const
 
 bool TileBuilder::spill(std::string& error)
 {
-    const TileRecordFormat format(*_glyphs);
-    const std::string path = temporaryPrefix(_options.temporaryDirectory);
-    if (_bounds.valid() && !_buckets)
+    if (!_buckets && !_spill)
     {
-        _buckets.reset(new TileBuckets(path, format, cubeAround(_bounds), 0, 0, streamBucketLevel(_options)));
-        const unsigned int countLevel = streamCountLevel(_options);
-        _bucketCounts.assign(std::size_t(1) << 3 * countLevel, 0);
-        _buckets->setCounter(&_bucketCounts, countLevel);
-    }
-    else if (!_bounds.valid() && !_spill)
-        _spill.reset(new TileSpill(path, format));
-    if ((_buckets && !_buckets->isOpen()) || (_spill && !_spill->isOpen()))
-    {
-        error = path + ": cannot create a temporary file (TileOptions::temporaryDirectory)";
-        _buckets.reset();
-        _spill.reset();
-        return false;
+        const TileRecordFormat format(*_glyphs);
+        const std::string path = temporaryPrefix(_options.temporaryDirectory);
+        if (_bounds.valid())
+            _buckets = createStreamBuckets(path, format, cubeAround(_bounds), _options, _bucketCounts);
+        else
+            _spill.reset(new TileSpill(path, format));
+        if ((_buckets && !_buckets->isOpen()) || (_spill && !_spill->isOpen()))
+        {
+            error = path + ": cannot create a temporary file (TileOptions::temporaryDirectory)";
+            _buckets.reset();
+            _spill.reset();
+            return false;
+        }
     }
     _spilledGlyphs += _glyphs->size();
     if (_spill)
@@ -295,28 +293,26 @@ osg::ref_ptr<osg::Node> TileBuilder::buildTree(TileWriter& writer, std::string& 
     if (_spill)
     {
         // Without bounds, the cube was known only now: one more pass sorts the glyphs.
-        TileBuckets buckets(_spill->getPath() + "-sorted", _spill->getFormat(), writer.getCube(), 0, 0,
-                            streamBucketLevel(_options));
-        if (!buckets.isOpen())
+        std::vector<std::size_t> counts;
+        const std::unique_ptr<TileBuckets> buckets = createStreamBuckets(
+            _spill->getPath() + "-sorted", _spill->getFormat(), writer.getCube(), _options, counts);
+        if (!buckets->isOpen())
         {
-            error = buckets.getPath() + ": cannot create a temporary file";
+            error = buckets->getPath() + ": cannot create a temporary file";
             return nullptr;
         }
-        const unsigned int countLevel = streamCountLevel(_options);
-        std::vector<std::size_t> counts(std::size_t(1) << 3 * countLevel, 0);
-        buckets.setCounter(&counts, countLevel);
         bool added = true;
         if (!_spill->read(
                 [&](const TileGlyphs& block)
                 {
-                    added = buckets.add(block, 0, block.size(), error);
-                    writer.setProgress(SORTED_SHARE * double(buckets.size()) / double(_spill->size()));
+                    added = buckets->add(block, 0, block.size(), error);
+                    writer.setProgress(SORTED_SHARE * double(buckets->size()) / double(_spill->size()));
                     return added;
                 },
                 error) ||
             !added)
             return nullptr;
-        return buildStreamedTree(buckets, std::move(counts), *_glyphs, writer, budget,
+        return buildStreamedTree(*buckets, std::move(counts), *_glyphs, writer, budget,
                                  _spill->getPath() + "-split", error);
     }
     TileTree tree(*_glyphs, writer);

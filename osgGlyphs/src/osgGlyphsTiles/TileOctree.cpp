@@ -74,6 +74,14 @@ OctreeCube osgGlyphsTiles::detail::cubeAround(const osg::BoundingBoxd& box)
     return cube;
 }
 
+unsigned int osgGlyphsTiles::detail::gridLevels(unsigned int cellsPerAxis)
+{
+    unsigned int levels = 0;
+    while ((2u << levels) <= cellsPerAxis)
+        ++levels;
+    return levels;
+}
+
 uint64_t osgGlyphsTiles::detail::firstCode(unsigned int level, uint64_t prefix)
 {
     return prefix << (3 * (MORTON_LEVELS - level));

@@ -34,6 +34,9 @@ struct OctreeCube
 /** The cube that quantises every point of box inside it (of side 1 for no point). */
 OctreeCube cubeAround(const osg::BoundingBoxd& box);
 
+/** The octree levels of a grid of cellsPerAxis cells per axis (a power of two): its log2. */
+unsigned int gridLevels(unsigned int cellsPerAxis);
+
 /** The first code of the node at level with prefix, and the first code after it. */
 uint64_t firstCode(unsigned int level, uint64_t prefix);
 uint64_t endCode(unsigned int level, uint64_t prefix);

@@ -11,6 +11,14 @@ namespace
 /** The deepest level the glyphs are counted at: 8^7 counters, 16 MiB. */
 const unsigned int MAX_COUNT_LEVEL = 7;
 
+/** Levels from a node to its buckets: 512 of them. */
+const unsigned int BUCKET_LEVELS = 3;
+
+unsigned int countLevelOf(const osgGlyphsTiles::TileOptions& options)
+{
+    return std::min(gridLevels(options.cellsPerAxis), MAX_COUNT_LEVEL);
+}
+
 /** An octree node cut into tiles from memory at once. */
 struct Unit
 {
@@ -52,7 +60,7 @@ public:
                  const std::string& temporaryPrefix)
         : _writer(writer), _format(format),
           _budget(std::max<std::size_t>(budget, writer.getOptions().maxGlyphsPerTile)),
-          _countLevel(streamCountLevel(writer.getOptions())), _temporaryPrefix(temporaryPrefix)
+          _countLevel(countLevelOf(writer.getOptions())), _temporaryPrefix(temporaryPrefix)
     {
     }
 
@@ -108,7 +116,7 @@ public:
             }
             _splits.push_back(std::make_unique<TileBuckets>(
                 _temporaryPrefix + "-" + std::to_string(_splits.size()), buckets.getFormat(),
-                _writer.getCube(), bucketLevel, prefix, std::min(bucketLevel + 3, _countLevel)));
+                _writer.getCube(), bucketLevel, prefix, std::min(bucketLevel + BUCKET_LEVELS, _countLevel)));
             TileBuckets& split = *_splits.back();
             if (!split.isOpen())
             {
@@ -281,17 +289,18 @@ private:
 
 }
 
-unsigned int osgGlyphsTiles::detail::streamCountLevel(const TileOptions& options)
+std::unique_ptr<TileBuckets> osgGlyphsTiles::detail::createStreamBuckets(const std::string& path,
+                                                                         const TileRecordFormat& format,
+                                                                         const OctreeCube& cube,
+                                                                         const TileOptions& options,
+                                                                         std::vector<std::size_t>& counts)
 {
-    unsigned int levels = 0;
-    while ((2u << levels) <= options.cellsPerAxis)
-        ++levels;
-    return std::min(levels, MAX_COUNT_LEVEL);
-}
-
-unsigned int osgGlyphsTiles::detail::streamBucketLevel(const TileOptions& options)
-{
-    return std::min(3u, streamCountLevel(options));
+    const unsigned int countLevel = countLevelOf(options);
+    auto buckets =
+        std::make_unique<TileBuckets>(path, format, cube, 0, 0, std::min(BUCKET_LEVELS, countLevel));
+    counts.assign(std::size_t(1) << 3 * countLevel, 0);
+    buckets->setCounter(&counts, countLevel);
+    return buckets;
 }
 
 osg::ref_ptr<osg::Node>

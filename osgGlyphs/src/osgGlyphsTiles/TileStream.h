@@ -10,16 +10,16 @@ namespace osgGlyphsTiles
 namespace detail
 {
 
-/** The level of the octree a streamed dataset's glyphs are counted at: the levels of an inner
- * tile's grid, at most 7 (8^7 counters, 16 MiB). */
-unsigned int streamCountLevel(const TileOptions& options);
+/** The buckets a streamed dataset is first sorted into, in a temporary file at path (isOpen()
+ * tells whether it could be made): the nodes 3 levels down the cube (512), or fewer for an inner
+ * tile's grid of fewer levels. They count their glyphs into counts, per node at the levels of an
+ * inner tile's grid (at most 7: 8^7 counters, 16 MiB), for buildStreamedTree(). */
+std::unique_ptr<TileBuckets> createStreamBuckets(const std::string& path, const TileRecordFormat& format,
+                                                 const OctreeCube& cube, const TileOptions& options,
+                                                 std::vector<std::size_t>& counts);
 
-/** The buckets a streamed dataset is first sorted into: the nodes 3 levels down (512), or at the
- * count level when that is less deep. */
-unsigned int streamBucketLevel(const TileOptions& options);
-
-/** The tile tree of the glyphs in buckets (the nodes at streamBucketLevel() of the writer's cube,
- * their glyphs counted per node at streamCountLevel() in counts) followed by those in tail, holding
+/** The tile tree of the glyphs in buckets (made by createStreamBuckets(), which counted them into
+ * counts) followed by those in tail, holding
  * at most about budget glyphs in memory at a time, as TileTree would make it from all of them at
  * once (the same nodes in the same order, byte for byte).
  *

@@ -44,14 +44,6 @@ double glyphsDrawnBy(osg::Node& node)
 /** Subtrees of more tiles than this are cut on threads of their own. */
 const std::size_t PARALLEL_TILES = 2;
 
-unsigned int log2Of(unsigned int powerOfTwo)
-{
-    unsigned int bits = 0;
-    while ((1u << (bits + 1)) <= powerOfTwo)
-        ++bits;
-    return bits;
-}
-
 }
 
 void TileGlyphs::clear()
@@ -108,7 +100,7 @@ void TileGlyphs::append(const TileGlyphs& other)
 TileWriter::TileWriter(const GlyphCloud& style, const TileOptions& options, const OctreeCube& cube,
                        const TileGlyphs& dataset, TileArchive* archive, std::size_t totalGlyphs,
                        const TileBuilder::ProgressFunction& progress)
-    : _style(style), _options(options), _cellLevels(log2Of(options.cellsPerAxis)), _cube(cube),
+    : _style(style), _options(options), _cellLevels(gridLevels(options.cellsPerAxis)), _cube(cube),
       _origin(dataset.origin), _scalarMin(dataset.scalarMin), _scalarMax(dataset.scalarMax),
       _tileStateSet(style.getStateSet() ? new osg::StateSet(*style.getStateSet(), osg::CopyOp::SHALLOW_COPY)
                                         : new osg::StateSet),
