@@ -35,6 +35,10 @@ if(NOT OSGGLYPHS_FIND_PUBLIC_ONLY)
     osgglyphs_require(OSMesa osmesa libosmesa6-dev)
     osgglyphs_require(EGL egl libegl-dev)
     osgglyphs_require(GLM glm libglm-dev)
+    # Compressed trajectories (.gz, .zst), read by osgGlyphsData.
+    osgglyphs_require(ZLIB zlib zlib1g-dev)
+    osgglyphs_require(ZSTD libzstd libzstd-dev)
+    find_package(Threads REQUIRED)
     # fast_float: locale-independent number parsing for the point readers (header-only).
     if(NOT TARGET FastFloat::fast_float)
         find_package(FastFloat CONFIG QUIET)

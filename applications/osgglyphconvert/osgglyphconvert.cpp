@@ -1,13 +1,17 @@
 // osgglyphconvert: point data into a paged level-of-detail hierarchy of glyph tiles, in one OSG
-// archive (.osga) whose master file is the root: `osgglyphviewer out.osga`, `osgviewer out.osga`.
+// archive (.osga) whose master file is the root: `osgglyphviewer out.osga`, `osgviewer out.osga`;
+// or each frame of a trajectory into an archive of its own (--frame-range, out%04d.osga).
 
 #include "ConvertProgress.h"
+#include "FrameRange.h"
 #include "SequentialShares.h"
 
+#include <osgGlyphsData/FrameSource>
 #include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsData/PointReader>
 #include <osgGlyphsData/RandomCloud>
 #include <osgGlyphsData/SharedDataset>
+#include <osgGlyphsData/TrajectoryPlayer>
 #include <osgGlyphsTiles/TileBuilder>
 
 #include <osg/ArgumentParser>
@@ -19,6 +23,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <future>
 #include <iostream>
 #include <limits>
@@ -37,6 +43,10 @@ const unsigned int RANDOM_BATCH = 1u << 20;
 
 /** Passes over the parts of a file larger than memory before giving up on its mapping settling. */
 const unsigned int MAX_SHARE_PASSES = 8;
+
+/** The frames of a trajectory spread over it that the colour range, the radius and the length
+ * scale of its archives are taken over (see sampleFrames()). */
+const std::size_t SAMPLE_FRAMES = 8;
 
 /** Free memory the allocator keeps for reuse instead of giving it back to the system. */
 const int KEPT_FREE_BYTES = 128 << 20;
@@ -58,6 +68,10 @@ struct ConvertOptions
     std::string output;
     std::string format;
     unsigned int frame = 0;
+    /** The frames converted: --frame's alone, or --frame-range's, each into an archive named by
+     * output as a pattern (formatFramePath()). */
+    FrameRange frames;
+    bool hasFrameRange = false;
     unsigned long long randomCount = 0;
     unsigned int seed = 1;
     osgGlyphsData::GlyphMappingOptions mapping;
@@ -67,10 +81,12 @@ struct ConvertOptions
 void describeOptions(osg::ApplicationUsage& usage)
 {
     usage.setCommandLineUsage(std::string(PROGRAM) + " [options] <input> <output.osga>\n       " + PROGRAM +
-                              " --random <n> [--seed <s>] [options] <output.osga>");
+                              " --frame-range <a:b[:step]> [options] <input> <output%04d.osga>\n       " +
+                              PROGRAM + " --random <n> [--seed <s>] [options] <output.osga>");
     usage.setDescription(std::string(PROGRAM) +
                          " cuts point data into a paged level-of-detail hierarchy of glyph tiles, in one "
-                         "OSG archive that osgglyphviewer, osgviewer and osgDB::readNodeFile open.");
+                         "OSG archive that osgglyphviewer, osgviewer and osgDB::readNodeFile open; or "
+                         "each frame of a trajectory into an archive of its own.");
     usage.addCommandLineOption(
         "<input>", "A point file: " +
                        []
@@ -80,10 +96,24 @@ void describeOptions(osg::ApplicationUsage& usage)
                                names += (names.empty() ? "" : ", ") + name;
                            return names;
                        }() +
-                       " (by extension).");
+                       " (by extension), also compressed by gzip or zstd (traj.lammpstrj.gz, "
+                       "data.csv.zst). The frames of compressed files and of --frame-range are read "
+                       "through an index of the file's frames, kept beside it (<input>.glyphindex) for "
+                       "the next run.");
     usage.addCommandLineOption("--format <name>", "Read the input as this format whatever its extension.");
-    usage.addCommandLineOption("--frame <n>",
-                               "The frame of a multi-frame input, counted from 0 (default 0).");
+    usage.addCommandLineOption(
+        "--frame <n>", "The frame of a multi-frame input, counted from 0 (default 0), with the colour "
+                       "range of every frame of a plain file; a compressed file's is mapped as by "
+                       "--frame-range.");
+    usage.addCommandLineOption(
+        "--frame-range <a:b[:step]>",
+        "Frames a to b (a: to the last), every step-th, each into an archive named by the output as a "
+        "pattern with the frame's number (out%04d.osga: out0000.osga, out0010.osga, ..): the archive "
+        "--frame would write of it, except that the colour range (over 8 frames spread over the file), "
+        "radius and length scale (of its first frame) are the same in every archive, so that one colour "
+        "means one value throughout; --range, --radius and --length-scale fix them. Each frame must fit "
+        "in --memory-glyphs. A frame that fails is reported and skipped, the others converted, and the "
+        "exit code is 1.");
     usage.addCommandLineOption("--random <n>", "Instead of a file, n random glyphs in the unit cube with "
                                                "scalars in [0,1) (as osgglyphviewer --random).");
     usage.addCommandLineOption("--seed <s>", "The seed of --random (default 1).");
@@ -108,18 +138,61 @@ void describeOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("-h or --help", "Display this help.");
 }
 
-bool readOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::string& error)
+/** Reads --frame and --frame-range. */
+bool readFrameOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::string& error)
 {
-    if (!osgGlyphsData::readGlyphMappingArguments(arguments, options.mapping, error))
-        return false;
-    arguments.read("--format", options.format);
     int frame = 0;
-    if (arguments.read("--frame", frame) && frame < 0)
+    const bool hasFrame = arguments.read("--frame", frame);
+    if (hasFrame && frame < 0)
     {
         error = "--frame counts from 0";
         return false;
     }
     options.frame = static_cast<unsigned int>(frame);
+    options.frames.first = options.frames.last = options.frame;
+    options.frames.option = "--frame " + std::to_string(frame);
+    std::string range;
+    options.hasFrameRange = arguments.read("--frame-range", range);
+    if (options.hasFrameRange && hasFrame)
+    {
+        error = "--frame and --frame-range do not combine: --frame-range f:f converts frame f alone";
+        return false;
+    }
+    if (options.hasFrameRange && !parseFrameRange(range, options.frames))
+    {
+        error = "--frame-range '" + range +
+                "': expected first:last or first:last:step (first: to the last frame), frames counted from 0";
+        return false;
+    }
+    return true;
+}
+
+/** With --frame-range, the output is a pattern that names each frame's archive. */
+bool checkOutputPattern(const ConvertOptions& options, std::string& error)
+{
+    std::string name;
+    if (!osgGlyphsData::formatFramePath(options.output, 0, name))
+    {
+        error = options.output + ": the output's pattern takes one integer conversion, such as %04d";
+        return false;
+    }
+    if (options.frames.mayHoldSeveral() && options.output.find('%') == std::string::npos)
+    {
+        error = options.frames.option +
+                " writes an archive per frame: name the output with a pattern such as "
+                "out%04d.osga, which the frame's number fills in";
+        return false;
+    }
+    return true;
+}
+
+bool readOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::string& error)
+{
+    if (!osgGlyphsData::readGlyphMappingArguments(arguments, options.mapping, error))
+        return false;
+    arguments.read("--format", options.format);
+    if (!readFrameOptions(arguments, options, error))
+        return false;
     double count = 0.0;
     if (arguments.read("--random", count) && !(count >= 1.0 && count <= 1e12))
     {
@@ -212,7 +285,12 @@ bool readOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::s
         error = options.output + ": the output is an OSG archive, named *.osga";
         return false;
     }
-    return true;
+    if (options.hasFrameRange && options.randomCount)
+    {
+        error = "--frame-range needs a file of frames, not --random";
+        return false;
+    }
+    return !options.hasFrameRange || checkOutputPattern(options, error);
 }
 
 /** The tiles of a --random dataset, generated a batch at a time. */
@@ -273,6 +351,11 @@ unsigned int sharesOf(const std::string& path, std::size_t maxGlyphs)
     return static_cast<unsigned int>(std::clamp(std::ceil(bytes / 12.0 / double(maxGlyphs)), 1.0, 65536.0));
 }
 
+void printWarning(const std::string& warning)
+{
+    std::cerr << PROGRAM << ": warning: " << warning << std::endl;
+}
+
 /** A point file, or one share of it, as read. */
 struct ReadPoints
 {
@@ -288,8 +371,7 @@ ReadPoints readPoints(const ConvertOptions& options, const osgGlyphsData::PointS
     if (progress)
         read.progress = [progress](uint64_t done, uint64_t total)
         { progress->update(total ? double(done) / total : 0.0); };
-    read.warning = [](const std::string& warning)
-    { std::cerr << PROGRAM << ": warning: " << warning << std::endl; };
+    read.warning = printWarning;
     read.share = share;
     ReadPoints points;
     points.dataset = osgGlyphsData::readPointFile(options.input, read, points.error);
@@ -321,6 +403,31 @@ struct PassBounds
     }
 };
 
+/** Adds the glyphs of a frame, through a prepared mapper, to builder, which is made from the
+ * first frame added; bounds, where known, holds every glyph that will be added. */
+bool addFrame(const ConvertOptions& options, const osgGlyphsData::GlyphMapper& mapper,
+              const osgGlyphsData::PointData& frame, const osg::BoundingBoxd* bounds,
+              osg::ref_ptr<osgGlyphsTiles::TileBuilder>& builder, std::string& error)
+{
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = mapper.createCloud(frame, error);
+    if (!cloud)
+        return false;
+    if (!builder)
+    {
+        builder = new osgGlyphsTiles::TileBuilder(*cloud, options.tiles);
+        builder->setColorTitle(mapper.getColorKey().title);
+        // The glyphs past the memory are sorted into octree nodes as they come.
+        if (bounds)
+            builder->setBounds(*bounds);
+    }
+    if (!builder->addGlyphs(*cloud, error))
+    {
+        error = options.input + ": " + error;
+        return false;
+    }
+    return true;
+}
+
 /** Adds the glyphs of one frame of points read from a file, or from one share of it under
  * shares (which must then be given beginShare() for it), to builder, which is made from the
  * first. */
@@ -348,24 +455,15 @@ bool addPoints(const ConvertOptions& options, const ReadPoints& points, Sequenti
     // is not the last, and its glyphs are not kept.
     if (shares && !shares->isSettled())
         return true;
-    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = mapper.createCloud(*dataset->getFrame(options.frame), error);
-    if (!cloud)
+    // The whole file's box from the previous pass.
+    const bool knownBounds =
+        bounds && bounds->previous.valid() && bounds->previousOrigin == mapper.getPositionOrigin();
+    const bool first = !builder;
+    if (!addFrame(options, mapper, *dataset->getFrame(options.frame),
+                  knownBounds ? &bounds->previous : nullptr, builder, error))
         return false;
-    if (!builder)
-    {
+    if (first)
         std::cerr << PROGRAM << ": " << mapper.describe() << std::endl;
-        builder = new osgGlyphsTiles::TileBuilder(*cloud, options.tiles);
-        builder->setColorTitle(mapper.getColorKey().title);
-        // The whole file's box from the previous pass: the glyphs past the memory are sorted
-        // into octree nodes as they come.
-        if (bounds && bounds->previous.valid() && bounds->previousOrigin == mapper.getPositionOrigin())
-            builder->setBounds(bounds->previous);
-    }
-    if (!builder->addGlyphs(*cloud, error))
-    {
-        error = options.input + ": " + error;
-        return false;
-    }
     return true;
 }
 
@@ -429,6 +527,213 @@ osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildFromFile(const ConvertOptions& op
     return nullptr;
 }
 
+/** Whether a file is gzip or zstd compressed, by its name or its first bytes: readPointFile()
+ * reads plain files only, a FrameSource these too. */
+bool isCompressed(const std::string& path)
+{
+    const std::string extension = osgDB::getLowerCaseFileExtension(path);
+    if (extension == "gz" || extension == "zst")
+        return true;
+    unsigned char magic[4] = {0, 0, 0, 0};
+    std::ifstream file(path, std::ios::binary);
+    file.read(reinterpret_cast<char*>(magic), sizeof(magic));
+    const std::streamsize size = file.gcount();
+    return (size >= 2 && magic[0] == 0x1f && magic[1] == 0x8b) ||
+           (size == 4 && magic[0] == 0x28 && magic[1] == 0xb5 && magic[2] == 0x2f && magic[3] == 0xfd);
+}
+
+/** A frame of a trajectory as decoded: a frame malformed fails alone. */
+struct DecodedFrame
+{
+    osg::ref_ptr<osgGlyphsData::PointData> data;
+    std::string error;
+};
+
+DecodedFrame decodeFrame(const osgGlyphsData::FrameSource& source, std::size_t frame)
+{
+    DecodedFrame decoded;
+    decoded.data = frame == 0 ? osg::ref_ptr<osgGlyphsData::PointData>(source.getFirstFrame())
+                              : source.readFrame(frame, decoded.error);
+    return decoded;
+}
+
+std::future<DecodedFrame> decodeLater(const osgGlyphsData::FrameSource& source, std::size_t frame)
+{
+    return std::async(std::launch::async, decodeFrame, std::cref(source), frame);
+}
+
+/** A trajectory opened for conversion: its frames, those converted, and the mapping of them all. */
+struct Trajectory
+{
+    explicit Trajectory(const ConvertOptions& options) : mapper(options.mapping) {}
+
+    osg::ref_ptr<osgGlyphsData::FrameSource> source;
+    std::vector<std::size_t> frames;
+    osgGlyphsData::GlyphMapper mapper;
+    /** The first frame converted, decoded while the mapping is prepared. */
+    std::future<DecodedFrame> first;
+};
+
+/** Fails on the first of the frames converted with more points than the glyphs held in memory: a
+ * frame of a trajectory is decoded and converted whole. */
+bool checkFrameSizes(const ConvertOptions& options, const Trajectory& trajectory, std::string& error)
+{
+    const std::size_t most = options.tiles.maxGlyphsInMemory;
+    for (std::size_t frame : trajectory.frames)
+    {
+        const uint64_t points = trajectory.source->getFrameInfo(frame).points;
+        if (points > most)
+        {
+            error = options.input + ": frame " + std::to_string(frame) + " has " + std::to_string(points) +
+                    " points, more than --memory-glyphs " + std::to_string(most) +
+                    ": raise it, or convert that frame alone with --frame from the uncompressed file, "
+                    "which is read in parts";
+            return false;
+        }
+    }
+    return true;
+}
+
+/** Opens the input as a trajectory, indexes its frames, lists those converted, starts decoding the
+ * first of them and prepares the mapping of them all over SAMPLE_FRAMES frames spread over the file
+ * (sampleFrames()), so that colour range, radius and length scale are the same in every frame's
+ * archive. */
+bool openTrajectory(const ConvertOptions& options, ConvertProgress& progress, Trajectory& trajectory,
+                    std::string& error)
+{
+    osgGlyphsData::FrameSourceOptions sourceOptions;
+    sourceOptions.format = options.format;
+    sourceOptions.warning = printWarning;
+    sourceOptions.progress = [&progress](uint64_t done, uint64_t total)
+    { progress.update(total ? double(done) / total : 0.0); };
+    progress.start("reading " + options.input);
+    trajectory.source = osgGlyphsData::FrameSource::open(options.input, sourceOptions, error);
+    if (!trajectory.source)
+        return false;
+    progress.start("indexing the frames of " + options.input);
+    trajectory.source->waitForIndex();
+    progress.finish();
+    trajectory.frames = listFrames(options.frames, options.input, trajectory.source->getNumFrames(), error);
+    if (trajectory.frames.empty() || !checkFrameSizes(options, trajectory, error))
+        return false;
+    trajectory.first = decodeLater(*trajectory.source, trajectory.frames[0]);
+    trajectory.mapper.setCulling(osgGlyphs::GlyphCulling::Off); // its clouds only carry the glyphs
+    if (!trajectory.mapper.prepare(*osgGlyphsData::sampleFrames(*trajectory.source, SAMPLE_FRAMES), 0, error))
+        return false;
+    std::cerr << PROGRAM << ": " << trajectory.mapper.describe() << std::endl;
+    return true;
+}
+
+/** The tiles of one frame of a compressed file, read through the index of its frames. */
+osg::ref_ptr<osgGlyphsTiles::TileBuilder> buildFromSource(const ConvertOptions& options,
+                                                          ConvertProgress& progress, std::string& error)
+{
+    Trajectory trajectory(options);
+    if (!openTrajectory(options, progress, trajectory, error))
+        return nullptr;
+    const DecodedFrame decoded = trajectory.first.get();
+    error = decoded.error;
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder;
+    return decoded.data && addFrame(options, trajectory.mapper, *decoded.data, nullptr, builder, error)
+               ? builder
+               : nullptr;
+}
+
+osg::ref_ptr<osgGlyphsTiles::TileBuilder> build(const ConvertOptions& options, ConvertProgress& progress,
+                                                std::string& error)
+{
+    if (options.randomCount)
+        return buildRandom(options, progress, error);
+    if (isCompressed(options.input))
+        return buildFromSource(options, progress, error);
+    return buildFromFile(options, progress, error);
+}
+
+/** The size of a file written; 0 when it cannot be told. */
+double fileBytes(const std::string& path)
+{
+    std::error_code error;
+    const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+    return error ? 0.0 : static_cast<double>(bytes);
+}
+
+/** What the archives of a frame range hold, for the last line. */
+struct SeriesSummary
+{
+    std::size_t written = 0;
+    std::size_t failed = 0;
+    double glyphs = 0.0;
+    double bytes = 0.0;
+};
+
+/** Converts one decoded frame of a trajectory into the archive at path. */
+bool writeFrame(const ConvertOptions& options, const Trajectory& trajectory, const DecodedFrame& decoded,
+                const std::string& path, const osgGlyphsTiles::TileBuilder::ProgressFunction& progress,
+                SeriesSummary& summary, std::string& error)
+{
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder;
+    error = decoded.error;
+    if (!decoded.data || !addFrame(options, trajectory.mapper, *decoded.data, nullptr, builder, error) ||
+        !builder->write(path, error, progress))
+        return false;
+    ++summary.written;
+    summary.glyphs += static_cast<double>(builder->getNumGlyphs());
+    summary.bytes += fileBytes(path);
+    return true;
+}
+
+void printSeriesSummary(const ConvertOptions& options, const SeriesSummary& summary, double seconds)
+{
+    std::fprintf(
+        stderr, "%s: wrote %zu frame%s to %s: %.0f glyphs, %.1f MB in %.2f s (%.3g M glyph-frames/s)\n",
+        PROGRAM, summary.written, summary.written == 1 ? "" : "s", options.output.c_str(), summary.glyphs,
+        summary.bytes / 1e6, seconds, seconds > 0 ? summary.glyphs / seconds / 1e6 : 0.0);
+    if (summary.failed)
+        std::fprintf(stderr, "%s: %zu of %zu frames failed\n", PROGRAM, summary.failed,
+                     summary.failed + summary.written);
+}
+
+/** Converts each frame of --frame-range into its archive, decoding the next frame meanwhile, and
+ * returns the exit code: 1 when any frame failed (each says why in a line), the others converted. */
+int convertFrameRange(const ConvertOptions& options)
+{
+    const auto start = std::chrono::steady_clock::now();
+    ConvertProgress progress(PROGRAM);
+    Trajectory trajectory(options);
+    std::string error;
+    if (!openTrajectory(options, progress, trajectory, error))
+    {
+        progress.finish();
+        std::cerr << PROGRAM << ": " << error << std::endl;
+        return 1;
+    }
+    const std::vector<std::size_t>& frames = trajectory.frames;
+    progress.start("converting " + std::to_string(frames.size()) + " frames");
+    SeriesSummary summary;
+    std::future<DecodedFrame> next = std::move(trajectory.first);
+    for (std::size_t i = 0; i < frames.size(); ++i)
+    {
+        const DecodedFrame decoded = next.get();
+        if (i + 1 < frames.size())
+            next = decodeLater(*trajectory.source, frames[i + 1]);
+        std::string path;
+        osgGlyphsData::formatFramePath(options.output, frames[i], path);
+        const auto update = [&progress, i, &frames](double done)
+        { progress.update((i + done) / frames.size()); };
+        if (!writeFrame(options, trajectory, decoded, path, update, summary, error))
+        {
+            progress.finish();
+            std::cerr << PROGRAM << ": frame " << frames[i] << " (timestep "
+                      << trajectory.source->getFrameInfo(frames[i]).timestep << "): " << error << std::endl;
+            ++summary.failed;
+        }
+    }
+    progress.finish();
+    printSeriesSummary(options, summary,
+                       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return summary.failed ? 1 : 0;
+}
+
 }
 
 int main(int argc, char** argv)
@@ -450,10 +755,11 @@ int main(int argc, char** argv)
         std::cerr << PROGRAM << ": " << error << std::endl;
         return 2;
     }
+    if (options.hasFrameRange)
+        return convertFrameRange(options);
     const auto start = std::chrono::steady_clock::now();
     ConvertProgress progress(PROGRAM);
-    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder =
-        options.randomCount ? buildRandom(options, progress, error) : buildFromFile(options, progress, error);
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder = build(options, progress, error);
     if (builder)
     {
         progress.start("writing " + options.output);
@@ -467,8 +773,7 @@ int main(int argc, char** argv)
         return 1;
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::error_code sizeError;
-    const double bytes = static_cast<double>(std::filesystem::file_size(options.output, sizeError));
+    const double bytes = fileBytes(options.output);
     const double glyphs = static_cast<double>(builder->getNumGlyphs());
     std::fprintf(stderr,
                  "%s: wrote %s: %.0f glyphs, %.1f MB (%.1f bytes per glyph) in %.2f s (%.2f M glyphs/s)\n",

@@ -12,11 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace
-{
-
-/** A sans-serif TrueType font if the system has one, else osgText's built-in font. */
-osgText::Font* getLegendFont()
+osgText::Font* getViewerFont()
 {
     static osg::ref_ptr<osgText::Font> font = []
     {
@@ -36,6 +32,25 @@ osgText::Font* getLegendFont()
     }();
     return font.get();
 }
+
+osg::ref_ptr<osg::Camera> createHudCamera(const std::string& name)
+{
+    osg::ref_ptr<osg::Camera> hud = new osg::Camera;
+    hud->setName(name);
+    hud->setReferenceFrame(osg::Transform::ABSOLUTE_RF);
+    hud->setRenderOrder(osg::Camera::POST_RENDER);
+    hud->setClearMask(0);
+    hud->setAllowEventFocus(false);
+    hud->setViewMatrix(osg::Matrix::identity());
+    hud->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+    osg::StateSet* stateSet = hud->getOrCreateStateSet();
+    stateSet->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+    stateSet->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+    return hud;
+}
+
+namespace
+{
 
 /** Lays out the legend in pixels of a viewport. */
 class LegendLayout
@@ -68,7 +83,7 @@ protected:
     void addText(const std::string& text, const osg::Vec3& position, osgText::Text::AlignmentType alignment)
     {
         osg::ref_ptr<osgText::Text> label = new osgText::Text;
-        label->setFont(getLegendFont());
+        label->setFont(getViewerFont());
         label->setCharacterSize(_size);
         label->setFontResolution(32, 32);
         label->setColor(_textColor);
@@ -189,17 +204,7 @@ osg::ref_ptr<osg::Camera> createColorLegend(const osgGlyphsData::ColorKey& key, 
 {
     if (key.kind == osgGlyphsData::ColorKey::None)
         return nullptr;
-    osg::ref_ptr<osg::Camera> hud = new osg::Camera;
-    hud->setName("osgglyphviewer colour legend");
-    hud->setReferenceFrame(osg::Transform::ABSOLUTE_RF);
-    hud->setRenderOrder(osg::Camera::POST_RENDER);
-    hud->setClearMask(0);
-    hud->setAllowEventFocus(false);
-    hud->setViewMatrix(osg::Matrix::identity());
-    hud->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
-    osg::StateSet* stateSet = hud->getOrCreateStateSet();
-    stateSet->setMode(GL_LIGHTING, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
-    stateSet->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF | osg::StateAttribute::PROTECTED);
+    osg::ref_ptr<osg::Camera> hud = createHudCamera("osgglyphviewer colour legend");
     hud->setUpdateCallback(new FollowViewport(key, reference, background));
     return hud;
 }

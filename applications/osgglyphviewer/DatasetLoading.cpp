@@ -12,65 +12,51 @@
 
 #include <unistd.h>
 
-namespace
+ProgressIndicator::ProgressIndicator(const std::string& file)
+    : _file(file), _terminal(isatty(fileno(stderr)) != 0), _start(std::chrono::steady_clock::now())
 {
+}
 
-/** The progress of one file on stderr. */
-class ProgressIndicator
+void ProgressIndicator::update(uint64_t bytesRead, uint64_t totalBytes)
 {
-public:
-    explicit ProgressIndicator(const std::string& file)
-        : _file(file), _terminal(isatty(fileno(stderr)) != 0), _start(std::chrono::steady_clock::now())
-    {
-    }
+    _bytes = bytesRead;
+    if (!_shown && std::max(bytesRead, totalBytes) < PROGRESS_MIN_BYTES)
+        return;
+    if (!_shown && !_terminal)
+        std::fprintf(stderr, "%s: reading %s (%.1f MB)\n", PROGRAM, _file.c_str(), totalBytes / 1e6);
+    _shown = true;
+    const int percent = totalBytes ? static_cast<int>(100 * bytesRead / totalBytes) : -1;
+    if (!_terminal || percent == _percent)
+        return;
+    _percent = percent;
+    if (totalBytes)
+        std::fprintf(stderr, "\r%s: reading %s %3d%% (%.1f of %.1f MB)", PROGRAM, _file.c_str(), percent,
+                     bytesRead / 1e6, totalBytes / 1e6);
+    else
+        std::fprintf(stderr, "\r%s: reading %s %.1f MB", PROGRAM, _file.c_str(), bytesRead / 1e6);
+    std::fflush(stderr);
+    _lineOpen = true;
+}
 
-    void update(uint64_t bytesRead, uint64_t totalBytes)
-    {
-        _bytes = bytesRead;
-        if (!_shown && std::max(bytesRead, totalBytes) < PROGRESS_MIN_BYTES)
-            return;
-        if (!_shown && !_terminal)
-            std::fprintf(stderr, "%s: reading %s (%.1f MB)\n", PROGRAM, _file.c_str(), totalBytes / 1e6);
-        _shown = true;
-        const int percent = totalBytes ? static_cast<int>(100 * bytesRead / totalBytes) : -1;
-        if (!_terminal || percent == _percent)
-            return;
-        _percent = percent;
-        if (totalBytes)
-            std::fprintf(stderr, "\r%s: reading %s %3d%% (%.1f of %.1f MB)", PROGRAM, _file.c_str(), percent,
-                         bytesRead / 1e6, totalBytes / 1e6);
-        else
-            std::fprintf(stderr, "\r%s: reading %s %.1f MB", PROGRAM, _file.c_str(), bytesRead / 1e6);
-        std::fflush(stderr);
-        _lineOpen = true;
-    }
+void ProgressIndicator::finish(std::size_t frames, std::size_t points)
+{
+    if (_lineOpen)
+        std::fputc('\n', stderr);
+    _lineOpen = false;
+    if (!_shown || frames == 0)
+        return;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - _start).count();
+    std::fprintf(stderr, "%s: read %.1f MB in %.2f s (%.1f MB/s): %zu frame%s, %zu points\n", PROGRAM,
+                 _bytes / 1e6, seconds, seconds > 0.0 ? _bytes / 1e6 / seconds : 0.0, frames,
+                 frames == 1 ? "" : "s", points);
+}
 
-    void finish(const osgGlyphsData::PointDataset* dataset)
-    {
-        if (_lineOpen)
-            std::fputc('\n', stderr);
-        if (!_shown || !dataset)
-            return;
-        const double seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - _start).count();
-        std::size_t points = 0;
-        for (const auto& frame : dataset->getFrames())
-            points += frame->getNumPoints();
-        std::fprintf(stderr, "%s: read %.1f MB in %.2f s (%.1f MB/s): %zu frame%s, %zu points\n", PROGRAM,
-                     _bytes / 1e6, seconds, seconds > 0.0 ? _bytes / 1e6 / seconds : 0.0,
-                     dataset->getNumFrames(), dataset->getNumFrames() == 1 ? "" : "s", points);
-    }
-
-private:
-    std::string _file;
-    bool _terminal;
-    std::chrono::steady_clock::time_point _start;
-    uint64_t _bytes = 0;
-    bool _shown = false;
-    bool _lineOpen = false;
-    int _percent = -2;
-};
-
+void ProgressIndicator::finish(const osgGlyphsData::PointDataset* dataset)
+{
+    std::size_t points = 0;
+    for (std::size_t i = 0; dataset && i < dataset->getNumFrames(); ++i)
+        points += dataset->getFrame(i)->getNumPoints();
+    finish(dataset ? dataset->getNumFrames() : 0, points);
 }
 
 osg::ref_ptr<osgGlyphsData::PointDataset> loadDataset(const std::string& file, const std::string& format,

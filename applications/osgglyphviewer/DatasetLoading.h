@@ -6,8 +6,32 @@
 #include <osgGlyphsData/PointData>
 #include <osgGlyphsData/PointShare>
 
+#include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <string>
+
+/** The progress of reading one file on stderr: from PROGRESS_MIN_BYTES on, a line updated in place
+ * on a terminal, and at the end a line of the bytes, time and throughput. */
+class ProgressIndicator
+{
+public:
+    explicit ProgressIndicator(const std::string& file);
+    /** For osgGlyphsData::PointReadOptions::progress. */
+    void update(uint64_t bytesRead, uint64_t totalBytes);
+    /** Ends the line with what was read (nothing when it failed: frames 0). */
+    void finish(std::size_t frames, std::size_t points);
+    void finish(const osgGlyphsData::PointDataset* dataset);
+
+private:
+    std::string _file;
+    bool _terminal;
+    std::chrono::steady_clock::time_point _start;
+    uint64_t _bytes = 0;
+    bool _shown = false;
+    bool _lineOpen = false;
+    int _percent = -2;
+};
 
 /** Reads every frame of a point file through osgGlyphsData::readPointFile, in the named format or the
  * one of its extension. Files of PROGRESS_MIN_BYTES or more show a progress indicator on stderr

@@ -1,6 +1,7 @@
 #include "Headless.h"
 
 #include "DatasetLoading.h"
+#include "MovieOutput.h"
 #include "ViewerCamera.h"
 #include "ViewerPicking.h"
 
@@ -114,6 +115,11 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
     setProjectionForView(*camera, options.fov, aspect, home);
     if (!sharing.compositor.valid()) // a share may well be out of view
         warnIfGlyphsHidden(*scene.getContent(), *camera, home);
+    if (options.playback.hasFrameRange || !options.playback.movie.empty())
+    {
+        camera->setViewMatrixAsLookAt(home.eye, home.center, home.up);
+        return renderPictureSequence(scene, *viewer, options);
+    }
     const unsigned int frames = options.frames > 0 ? options.frames : 1;
     std::vector<double> times;
     for (unsigned int frame = 0; frame < frames; ++frame)

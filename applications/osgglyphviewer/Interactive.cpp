@@ -1,6 +1,7 @@
 #include "Interactive.h"
 
 #include "ScreenEffectsOptions.h"
+#include "Timeline.h"
 #include "ViewerCamera.h"
 #include "ViewerEventHandler.h"
 #include "ViewerPicking.h"
@@ -84,6 +85,13 @@ int runInteractive(ViewerScene& scene, const ViewerOptions& options, osg::Applic
     osgText::Text* pickText = nullptr;
     scene.getRoot()->addChild(createPickHud(options.width, options.height, options.background, pickText));
     keys->setPickText(pickText);
+    if (osgGlyphsData::TrajectoryPlayer* player = scene.getPlayer())
+    {
+        // Before the other handlers: a click on the bar seeks instead of picking or turning.
+        osg::ref_ptr<Timeline> timeline = new Timeline(player, camera, options.background);
+        scene.getRoot()->addChild(timeline->getHud());
+        viewer->addEventHandler(timeline.get());
+    }
     for (const auto& handler : createHandlers(keys.get(), camera->getOrCreateStateSet(), usage))
         viewer->addEventHandler(handler.get());
     viewer->addEventHandler(new ScreenEffectsKeys(scene.getScreenEffects()));

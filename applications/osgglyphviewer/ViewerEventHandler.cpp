@@ -1,11 +1,13 @@
 #include "ViewerEventHandler.h"
 
 #include "DatasetLoading.h"
+#include "Timeline.h"
 #include "ViewerPicking.h"
 
 #include <osgGlyphs/GlyphStateCache>
 #include <osgViewer/View>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -16,7 +18,7 @@ bool ViewerEventHandler::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActi
         checkPrograms(aa);
         followFile(ea.getTime(), aa);
     }
-    if (ea.getButton() == osgGA::GUIEventAdapter::LEFT_MOUSE_BUTTON)
+    if (ea.getButton() == osgGA::GUIEventAdapter::LEFT_MOUSE_BUTTON && !ea.getHandled())
     {
         if (ea.getEventType() == osgGA::GUIEventAdapter::PUSH)
         {
@@ -30,6 +32,11 @@ bool ViewerEventHandler::handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActi
     }
     if (ea.getHandled() || ea.getEventType() != osgGA::GUIEventAdapter::KEYDOWN)
         return false;
+    if (handlePlaybackKey(ea.getKey()))
+    {
+        aa.requestRedraw();
+        return true;
+    }
     switch (ea.getKey())
     {
     case 'l':
@@ -160,8 +167,60 @@ void ViewerEventHandler::stepFrame(int step)
         std::cerr << PROGRAM << ": " << error << std::endl;
 }
 
+bool ViewerEventHandler::handlePlaybackKey(int key)
+{
+    osgGlyphsData::TrajectoryPlayer* player = _scene ? _scene->getPlayer() : nullptr;
+    if (!player || (_scene->getNumFrames() < 2 && player->getCache()->getSource()->isIndexComplete()))
+        return false; // one frame: space stays the manipulator's home key
+    switch (key)
+    {
+    case ' ':
+        player->setPlaying(!player->isPlaying());
+        break;
+    case '+':
+    case '=':
+        player->setFramesPerSecond(std::min(player->getFramesPerSecond() * 1.5, 1000.0));
+        break;
+    case '-':
+        player->setFramesPerSecond(std::max(player->getFramesPerSecond() / 1.5, 0.1));
+        break;
+    case ']':
+        player->setStep(player->getStep() * 2);
+        break;
+    case '[':
+        player->setStep(std::abs(player->getStep()) > 1 ? player->getStep() / 2 : player->getStep());
+        break;
+    case 'L':
+        player->setLoop(!player->getLoop());
+        break;
+    case 'B':
+        player->setStep(-player->getStep());
+        break;
+    case osgGA::GUIEventAdapter::KEY_Home:
+        player->seek(0.0);
+        break;
+    case osgGA::GUIEventAdapter::KEY_End:
+        player->seek(static_cast<double>(_scene->getNumFrames() - 1));
+        break;
+    default:
+        return false;
+    }
+    std::cout << PROGRAM << ": " << describePlayback(*player) << std::endl;
+    return true;
+}
+
 void ViewerEventHandler::getUsage(osg::ApplicationUsage& usage) const
 {
+    usage.addKeyboardMouseBinding("Space", "Play or pause a trajectory (with one frame: the camera's home)");
+    usage.addKeyboardMouseBinding("+", "Play faster (x1.5)");
+    usage.addKeyboardMouseBinding("-", "Play slower (/1.5)");
+    usage.addKeyboardMouseBinding("]", "Play every other frame (the step doubles)");
+    usage.addKeyboardMouseBinding("[", "Halve the step");
+    usage.addKeyboardMouseBinding("B", "Play backwards or forwards");
+    usage.addKeyboardMouseBinding("L", "Loop at the end, or stop");
+    usage.addKeyboardMouseBinding("Home", "First frame");
+    usage.addKeyboardMouseBinding("End", "Last frame");
+    usage.addKeyboardMouseBinding("Timeline", "Click or drag on the bar at the bottom to go to a frame");
     usage.addKeyboardMouseBinding("l", "Toggle lighting: glyphs lit or unlit, and OpenGL lighting");
     usage.addKeyboardMouseBinding("x", "Toggle transparency: glyphs at the --opacity (default 0.5), blended "
                                        "in depth order by depth peeling, or opaque");

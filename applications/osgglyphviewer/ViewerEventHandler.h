@@ -12,6 +12,7 @@
  * - l: glyphs lit or unlit. The event is left unhandled, so that an osgGA::StateSetManipulator
  *   added after this handler toggles OpenGL lighting of the other geometry with the same key;
  * - n, p: the next and the previous frame of a multi-frame file (wrapping around);
+ * - space, +, -, [, ], B, L, Home, End: a trajectory's playback (see getUsage());
  * - r: re-reads the glyph shaders (osgGlyphs::GlyphStateCache::reloadShaders);
  * - a left click without a drag picks the glyph under the mouse: it is selected (drawn tinted),
  *   its point's columns in the current frame show in the pick text, and its pick line
@@ -39,6 +40,8 @@ protected:
     ~ViewerEventHandler() override = default;
 
     void stepFrame(int step);
+    /** The keys of a trajectory's playback; false for another key, or without a trajectory. */
+    bool handlePlaybackKey(int key);
     void checkPrograms(osgGA::GUIActionAdapter& aa);
     /** --follow: reads the frames the file completed, and shows the newest while the last is shown. */
     void followFile(double time, osgGA::GUIActionAdapter& aa);

@@ -4,6 +4,8 @@
 
 #include <osgGlyphsData/PointReader>
 
+#include <osgGlyphsData/FrameSource>
+
 #include <osgDB/FileUtils>
 
 #include <cstdlib>
@@ -245,6 +247,7 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
                                "2000000 unless osgglyphconvert --glyph-budget set another).");
 
     osgGlyphsData::describeGlyphMappingArguments(usage);
+    describePlaybackOptions(usage);
 
     usage.addCommandLineOption("--size <w> <h>", "Window or image size in pixels (default 800 600).");
     usage.addCommandLineOption("--camera <ex> <ey> <ez> <cx> <cy> <cz> <ux> <uy> <uz>",
@@ -270,7 +273,8 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
                                               "says otherwise) instead of opening a window.");
     usage.addCommandLineOption("--headless <osmesa|egl>",
                                "The GL backend of --offscreen; implies --offscreen.");
-    usage.addCommandLineOption("--output <file.png>", "Write the rendered image; implies --offscreen.");
+    usage.addCommandLineOption("--output <file.png>", "Write the rendered image; implies --offscreen. With "
+                                                      "--frame-range, a pattern such as out%04d.png.");
     usage.addCommandLineOption("--depth-output <file.pfm>",
                                "Write eye-space depth (distance from the eye plane along the view "
                                "direction) as float PFM, rows bottom to top, background +inf; implies "
@@ -298,8 +302,11 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
 bool readViewerOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std::string& error)
 {
     if (!readInputOptions(arguments, options, error) || !readMappingOptions(arguments, options, error) ||
-        !readViewOptions(arguments, options, error) || !readOutputOptions(arguments, options, error))
+        !readViewOptions(arguments, options, error) || !readOutputOptions(arguments, options, error) ||
+        !readPlaybackOptions(arguments, options.playback, error))
         return false;
+    if (options.playback.hasFrameRange || !options.playback.movie.empty())
+        options.offscreen = true;
 
     arguments.reportRemainingOptionsAsUnrecognized();
     if (arguments.errors())
@@ -328,6 +335,35 @@ bool readViewerOptions(osg::ArgumentParser& arguments, ViewerOptions& options, s
     if (options.follow && options.file.empty())
     {
         error = "--follow needs a file";
+        return false;
+    }
+    const PlaybackOptions& playback = options.playback;
+    if ((playback.hasFrameRange || !playback.movie.empty()) && options.file.empty())
+    {
+        error = std::string(playback.movie.empty() ? "--frame-range" : "--movie") + " needs a file of frames";
+        return false;
+    }
+    if (playback.hasFrameRange && playback.movie.empty() && options.output.find('%') == std::string::npos)
+    {
+        error = "--frame-range writes a picture per frame: give --output a pattern such as out%04d.png, or "
+                "--movie";
+        return false;
+    }
+    if (!playback.movie.empty() && !options.output.empty() && options.output.find('%') == std::string::npos)
+    {
+        error = "--output with --movie writes every picture too: give it a pattern such as out%04d.png";
+        return false;
+    }
+    std::string name;
+    if (!osgGlyphsData::formatFramePath(options.output, 0, name))
+    {
+        error = "--output '" + options.output + "': a pattern holds one integer conversion, such as %04d";
+        return false;
+    }
+    if ((playback.hasFrameRange || !playback.movie.empty()) && (options.follow || options.frames > 0))
+    {
+        error = "--frame-range and --movie render the frames of the file; they do not combine with " +
+                std::string(options.follow ? "--follow" : "--frames");
         return false;
     }
     if (options.hasPick && !options.offscreen)

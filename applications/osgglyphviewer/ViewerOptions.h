@@ -3,6 +3,7 @@
 #ifndef OSGGLYPHVIEWER_VIEWEROPTIONS_H
 #define OSGGLYPHVIEWER_VIEWEROPTIONS_H 1
 
+#include "PlaybackOptions.h"
 #include "ScreenEffectsOptions.h"
 #include "Transparency.h"
 
@@ -46,6 +47,7 @@ struct ViewerOptions
     std::size_t glyphBudget = 0; // tile archives; 0: the archive's own
 
     osgGlyphsData::GlyphMappingOptions mapping;
+    PlaybackOptions playback; // trajectories: --play, --fps, --interpolate, --frame-range, --movie
 
     // View
     int width = 800;

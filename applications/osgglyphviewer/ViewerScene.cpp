@@ -5,10 +5,12 @@
 #include "DatasetLoading.h"
 #include "ShadowScene.h"
 #include "TileScene.h"
+#include "TrajectoryScene.h"
 #include "ViewerCamera.h"
 #include "ViewerText.h"
 
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -30,11 +32,27 @@ ViewerScene::ViewerScene(const FrameSource& source, std::size_t numFrames, const
     setLit(true);
 }
 
+std::size_t ViewerScene::getFrame() const
+{
+    return _player.valid() ? static_cast<std::size_t>(std::floor(_player->getPosition() + 1e-9)) : _frame;
+}
+
+std::size_t ViewerScene::getNumFrames() const
+{
+    return _player.valid() ? _player->getNumFrames() : _numFrames;
+}
+
+void ViewerScene::setPlayer(osgGlyphsData::TrajectoryPlayer* player)
+{
+    _player = player;
+}
+
 bool ViewerScene::setFrame(std::size_t frame, std::string& error)
 {
-    if (frame >= _numFrames)
+    const std::size_t frames = getNumFrames();
+    if (frame >= frames)
     {
-        error = "no frame " + std::to_string(frame) + " (frames 0 to " + std::to_string(_numFrames - 1) + ")";
+        error = "no frame " + std::to_string(frame) + " (frames 0 to " + std::to_string(frames - 1) + ")";
         return false;
     }
     osg::ref_ptr<osg::Node> node = _source(frame, error);
@@ -228,6 +246,7 @@ bool agree(const SceneSharing& sharing, bool ok, std::string& error)
     return sharing.agree ? sharing.agree(ok, error) : ok;
 }
 
+/** A file split over processes (mpirun): each reads its share of every frame at once. */
 osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, const SceneSharing& sharing,
                                              std::string& error)
 {
@@ -310,6 +329,8 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
     osg::ref_ptr<ViewerScene> scene;
     if (!options.file.empty() && isTileArchive(options.file))
         scene = createTileScene(options, error);
+    else if (!options.file.empty() && !sharing.isShared())
+        scene = createTrajectoryScene(options, error);
     else if (!options.file.empty())
         scene = createDatasetScene(options, sharing, error);
     else if (options.randomCount > 0)

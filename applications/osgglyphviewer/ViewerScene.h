@@ -7,6 +7,7 @@
 
 #include <osgGlyphs/GlyphCloud>
 #include <osgGlyphsData/GlyphMapping>
+#include <osgGlyphsData/TrajectoryPlayer>
 
 #include <osg/Camera>
 #include <osg/ClipNode>
@@ -36,8 +37,15 @@ public:
 
     /** Shows the frame; on failure keeps the current one and returns false with error set. */
     bool setFrame(std::size_t frame, std::string& error);
-    std::size_t getFrame() const { return _frame; }
-    std::size_t getNumFrames() const { return _numFrames; }
+    /** The frame shown (the stored frame before it, for an interpolated picture). */
+    std::size_t getFrame() const;
+    /** The frames known (of a trajectory whose index is being built: so far). */
+    std::size_t getNumFrames() const;
+
+    /** The player of a trajectory, which then makes the frames (setFrame() shows them through
+     * it): its cloud is the content, its update callback on the content's group. */
+    void setPlayer(osgGlyphsData::TrajectoryPlayer* player);
+    osgGlyphsData::TrajectoryPlayer* getPlayer() const { return _player.get(); }
 
     /** Reads the frames its file completed since the last call; added: how many (--follow). */
     typedef std::function<bool(std::size_t& added, std::string& error)> FrameFollower;
@@ -102,6 +110,7 @@ protected:
     static void computeOcclusion(osg::Node& node);
 
     FrameSource _source;
+    osg::ref_ptr<osgGlyphsData::TrajectoryPlayer> _player;
     FrameFollower _follower;
     std::size_t _numFrames;
     std::size_t _frame = 0;

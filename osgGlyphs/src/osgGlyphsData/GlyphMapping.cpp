@@ -102,7 +102,7 @@ std::string GlyphMapper::missingColumn(const std::string& option, const std::str
 
 bool GlyphMapper::prepare(const PointDataset& dataset, std::size_t startFrame, std::string& error)
 {
-    _multiFrame = dataset.getNumFrames() > 1;
+    _multiFrame = _namesTimesteps || dataset.getNumFrames() > 1;
     const PointData* data = dataset.getFrame(startFrame);
     if (!data)
     {
@@ -457,6 +457,9 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
         error = frameName(data) + ": " + error;
         return nullptr;
     }
+    FrameArrays arrays;
+    if (!computeArrays(data, arrays, error))
+        return nullptr;
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
     cloud->setName(data.getSource() + " timestep " + std::to_string(data.getTimestep()));
     applyGlyphStyle(*cloud, _options);
@@ -464,19 +467,93 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
     cloud->setOrigin(origin);
     // The positions last: the setters before them work on an empty cloud, and the culling chunks
     // are built once.
-    if (!setRadii(*cloud, data, error) || !setVectors(*cloud, data, error) || !setColors(*cloud, data, error))
-        return nullptr;
+    if (arrays.radii.valid())
+        cloud->setRadii(arrays.radii.get());
+    else
+        cloud->setRadius(_radius);
+    if (arrays.vectors.valid())
+    {
+        cloud->setVectors(arrays.vectors.get());
+        cloud->setLengthScale(_lengthScale);
+    }
+    if (arrays.scalars.valid())
+    {
+        cloud->setScalarRange(_key.min, _key.max); // before the scalars: they are packed once, for it
+        cloud->setScalars(arrays.scalars.get());
+    }
+    else if (arrays.colors.valid())
+        cloud->setColors(arrays.colors.get());
+    else
+        cloud->setColor(UNIFORM_COLOR);
     cloud->setPositions(positions.get());
     return cloud;
 }
 
-bool GlyphMapper::setRadii(GlyphCloud& cloud, const PointData& data, std::string& error) const
+namespace
+{
+
+/** Gives target the contents of source where they differ; true when they did. */
+template <class Array>
+bool replaceContents(Array* target, Array* source)
+{
+    if (!target || !source || target->asVector() == source->asVector())
+        return false;
+    target->asVector().swap(source->asVector());
+    target->dirty();
+    return true;
+}
+
+}
+
+bool GlyphMapper::updateCloud(GlyphCloud& cloud, const PointData& data, std::string& error) const
+{
+    osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
+    osg::Vec3d origin;
+    if (!getPositions(data, _options.positionColumns, positions->asVector(), origin, error))
+    {
+        error = frameName(data) + ": " + error;
+        return false;
+    }
+    FrameArrays arrays;
+    if (!computeArrays(data, arrays, error))
+        return false;
+    const bool sameKinds = arrays.radii.valid() == (cloud.getRadii() != nullptr) &&
+                           arrays.vectors.valid() == (cloud.getVectors() != nullptr) &&
+                           arrays.scalars.valid() == (cloud.getScalars() != nullptr) &&
+                           arrays.colors.valid() == (cloud.getColors() != nullptr) && cloud.getPositions();
+    if (!sameKinds)
+    {
+        error = frameName(data) + ": the cloud was not made by this mapping";
+        return false;
+    }
+    // Positions stay relative to the cloud's origin, which a frame's own may differ from.
+    const osg::Vec3d shift = origin - cloud.getOrigin();
+    if (shift != osg::Vec3d())
+    {
+        for (osg::Vec3f& p : positions->asVector())
+            p = osg::Vec3f(osg::Vec3d(p) + shift);
+    }
+    bool changed = replaceContents(cloud.getPositions(), positions.get());
+    changed = replaceContents(cloud.getRadii(), arrays.radii.get()) || changed;
+    changed = replaceContents(cloud.getVectors(), arrays.vectors.get()) || changed;
+    changed = replaceContents(cloud.getScalars(), arrays.scalars.get()) || changed;
+    changed = replaceContents(cloud.getColors(), arrays.colors.get()) || changed;
+    if (changed)
+        cloud.dirtyGlyphs();
+    return true;
+}
+
+bool GlyphMapper::computeArrays(const PointData& data, FrameArrays& arrays, std::string& error) const
+{
+    return computeRadii(data, arrays.radii, error) && computeVectors(data, arrays.vectors, error) &&
+           computeColors(data, arrays, error);
+}
+
+bool GlyphMapper::computeRadii(const PointData& data, osg::ref_ptr<osg::FloatArray>& radii,
+                               std::string& error) const
 {
     if (_radiusColumn.empty() && !_elementRadii)
-    {
-        cloud.setRadius(_radius);
         return true;
-    }
     ColumnValues column;
     if (!column.assign(data, _elementRadii ? "element" : _radiusColumn))
     {
@@ -485,14 +562,14 @@ bool GlyphMapper::setRadii(GlyphCloud& cloud, const PointData& data, std::string
                               : missingColumn(option("radius-by"), _radiusColumn, data);
         return false;
     }
-    osg::ref_ptr<osg::FloatArray> radii = new osg::FloatArray(data.getNumPoints());
+    radii = new osg::FloatArray(data.getNumPoints());
     for (std::size_t i = 0; i < radii->size(); ++i)
         (*radii)[i] = _elementRadii ? elementOf((*column)[i]).covalentRadius : (*column)[i] * _radius;
-    cloud.setRadii(radii.get());
     return true;
 }
 
-bool GlyphMapper::setVectors(GlyphCloud& cloud, const PointData& data, std::string& error) const
+bool GlyphMapper::computeVectors(const PointData& data, osg::ref_ptr<osg::Vec3Array>& vectors,
+                                 std::string& error) const
 {
     if (_options.shape == GlyphShape::Sphere)
         return true;
@@ -502,25 +579,19 @@ bool GlyphMapper::setVectors(GlyphCloud& cloud, const PointData& data, std::stri
         error = missingColumn(option("vector"), joinColumns(_vectorColumns), data);
         return false;
     }
-    osg::ref_ptr<osg::Vec3Array> vectors = new osg::Vec3Array(data.getNumPoints());
+    vectors = new osg::Vec3Array(data.getNumPoints());
     for (std::size_t i = 0; i < vectors->size(); ++i)
         (*vectors)[i].set((*v[0])[i], (*v[1])[i], (*v[2])[i]);
-    cloud.setVectors(vectors.get());
-    cloud.setLengthScale(_lengthScale);
     return true;
 }
 
-bool GlyphMapper::setColors(GlyphCloud& cloud, const PointData& data, std::string& error) const
+bool GlyphMapper::computeColors(const PointData& data, FrameArrays& arrays, std::string& error) const
 {
     const std::size_t n = data.getNumPoints();
     if (_colorSource == ColorSource::Column || _colorSource == ColorSource::Speed)
     {
-        osg::ref_ptr<osg::FloatArray> scalars = new osg::FloatArray;
-        if (!computeScalars(data, scalars->asVector(), error))
-            return false;
-        cloud.setScalarRange(_key.min, _key.max); // before the scalars: they are packed once, for it
-        cloud.setScalars(scalars.get());
-        return true;
+        arrays.scalars = new osg::FloatArray;
+        return computeScalars(data, arrays.scalars->asVector(), error);
     }
     osg::ref_ptr<osg::Vec4ubArray> colors = new osg::Vec4ubArray(n);
     if (_colorSource == ColorSource::Element || _colorSource == ColorSource::Category)
@@ -552,11 +623,8 @@ bool GlyphMapper::setColors(GlyphCloud& cloud, const PointData& data, std::strin
                                    (*rgb[2])[i] * _rgbScale, hasAlpha ? (*alpha)[i] * _rgbScale : 1.0f));
     }
     else
-    {
-        cloud.setColor(UNIFORM_COLOR);
-        return true;
-    }
-    cloud.setColors(colors.get());
+        return true; // one colour
+    arrays.colors = colors;
     return true;
 }
 

@@ -58,8 +58,9 @@ void osgGlyphsData::describeGlyphMappingArguments(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--colormap <name|file>",
                                "Colour map: " + joinNames(osgGlyphs::ColorMap::getBuiltinNames()) +
                                    " (default viridis), or a file of #rrggbb lines.");
-    usage.addCommandLineOption("--range <min> <max>", "Values mapped to the ends of the colour map "
-                                                      "(default: the data's range over every frame).");
+    usage.addCommandLineOption("--range <min> <max>",
+                               "Values mapped to the ends of the colour map (default: the data's range; of "
+                               "a trajectory, over the frames --range-sample says).");
     usage.addCommandLineOption("--vector <vx,vy,vz>", "Vector columns for cones, arrows, cylinders and speed "
                                                       "(default vx,vy,vz, then velo_*, velocity_*).");
     usage.addCommandLineOption("--length-scale <s>", "Vector glyph length per unit of vector length "
