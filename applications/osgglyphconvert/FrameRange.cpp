@@ -1,21 +1,9 @@
 #include "FrameRange.h"
 
 #include <algorithm>
-#include <cstdlib>
 
 namespace
 {
-
-/** The largest step taken, so that frame + step cannot overflow. */
-const unsigned long long MAX_STEP = 1000000;
-
-bool parseCount(const std::string& text, unsigned long long& value)
-{
-    if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos)
-        return false;
-    value = std::strtoull(text.c_str(), nullptr, 10);
-    return true;
-}
 
 /** "11 frames, 0 to 10" */
 std::string describeFrames(std::size_t count)
@@ -29,21 +17,8 @@ std::string describeFrames(std::size_t count)
 
 bool parseFrameRange(const std::string& text, FrameRange& range)
 {
-    const std::size_t colon = text.find(':');
-    if (colon == std::string::npos)
+    if (!osgGlyphsData::parseFrameRange(text, range))
         return false;
-    const std::size_t second = text.find(':', colon + 1);
-    const std::string last =
-        text.substr(colon + 1, second == std::string::npos ? std::string::npos : second - colon - 1);
-    unsigned long long first = 0, end = 0, step = 1;
-    if (!parseCount(text.substr(0, colon), first) || (!last.empty() && !parseCount(last, end)) ||
-        (second != std::string::npos && !parseCount(text.substr(second + 1), step)))
-        return false;
-    if (step == 0 || step > MAX_STEP || (!last.empty() && end < first))
-        return false;
-    range.first = static_cast<std::size_t>(first);
-    range.last = last.empty() ? SIZE_MAX : static_cast<std::size_t>(end);
-    range.step = static_cast<std::size_t>(step);
     range.option = "--frame-range " + text;
     return true;
 }

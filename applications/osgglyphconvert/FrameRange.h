@@ -3,17 +3,17 @@
 #ifndef OSGGLYPHCONVERT_FRAMERANGE_H
 #define OSGGLYPHCONVERT_FRAMERANGE_H 1
 
+#include <osgGlyphsData/FrameSource>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
 
-/** Frames first to last, every step-th, counted from 0. */
-struct FrameRange
+/** Frames first to last, every step-th, counted from 0, and the option that named them. */
+struct FrameRange : osgGlyphsData::FrameRange
 {
-    std::size_t first = 0;
-    std::size_t last = 0; // SIZE_MAX: to the file's last frame
-    std::size_t step = 1;
+    FrameRange() { last = 0; }
     /** The option as given ("--frame-range 0:30:10", "--frame 7"), for messages. */
     std::string option = "--frame 0";
 
@@ -21,7 +21,8 @@ struct FrameRange
     bool mayHoldSeveral() const { return last == SIZE_MAX || last - first >= step; }
 };
 
-/** Parses "a:b", "a:b:step" or "a:" (to the last frame); false when it is none of them. */
+/** Parses --frame-range's "a:b", "a:b:step" or "a:" (osgGlyphsData::parseFrameRange); false when
+ * it is none of them. */
 bool parseFrameRange(const std::string& text, FrameRange& range);
 
 /** The frames of the range in a file of numFrames frames; empty, with a one-line error naming

@@ -123,15 +123,15 @@ private:
 std::vector<double> listPictures(const PlaybackOptions& playback, std::size_t numFrames, std::string& error)
 {
     std::vector<double> pictures;
-    if (numFrames == 0 || playback.first >= numFrames)
+    if (numFrames == 0 || playback.range.first >= numFrames)
     {
-        error = "--frame-range: no frame " + std::to_string(playback.first) + " (the file has " +
+        error = "--frame-range: no frame " + std::to_string(playback.range.first) + " (the file has " +
                 std::to_string(numFrames) + " frames, counted from 0)";
         return pictures;
     }
-    const std::size_t last = std::min(playback.last, numFrames - 1);
-    const std::size_t step = playback.rangeStep;
-    for (std::size_t frame = playback.first; frame <= last; frame += step)
+    const std::size_t last = std::min(playback.range.last, numFrames - 1);
+    const std::size_t step = playback.range.step;
+    for (std::size_t frame = playback.range.first; frame <= last; frame += step)
     {
         pictures.push_back(static_cast<double>(frame));
         if (frame + step > last)
@@ -155,7 +155,7 @@ int renderPictureSequence(ViewerScene& scene, osgGlyphsHeadless::OffscreenViewer
     player->getCache()->getSource()->waitForIndex();
     PlaybackOptions playback = options.playback;
     if (!playback.hasFrameRange)
-        playback.last = SIZE_MAX;
+        playback.range.last = SIZE_MAX;
     const std::vector<double> pictures = listPictures(playback, player->getNumFrames(), error);
     PictureOutputs outputs;
     if (pictures.empty() || !outputs.open(options, error))
@@ -164,8 +164,8 @@ int renderPictureSequence(ViewerScene& scene, osgGlyphsHeadless::OffscreenViewer
         return 1;
     }
     player->setPlaying(false);
-    player->setStep(static_cast<int>(playback.rangeStep));
-    player->setRange(playback.first, std::min(playback.last, player->getNumFrames() - 1));
+    player->setStep(static_cast<int>(playback.range.step));
+    player->setRange(playback.range.first, std::min(playback.range.last, player->getNumFrames() - 1));
     player->setLoop(false);
     SequenceProgress progress(pictures.size());
     for (std::size_t i = 0; i < pictures.size(); ++i)

@@ -1,22 +1,5 @@
 #include "PlaybackOptions.h"
 
-#include <cstdio>
-#include <cstdlib>
-#include <regex>
-
-namespace
-{
-
-bool parseCount(const std::string& text, unsigned long long& value)
-{
-    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 18)
-        return false;
-    value = std::strtoull(text.c_str(), nullptr, 10);
-    return true;
-}
-
-}
-
 void describePlaybackOptions(osg::ApplicationUsage& usage)
 {
     usage.addCommandLineOption("--play", "Play a trajectory from the start (space plays and pauses).");
@@ -41,25 +24,6 @@ void describePlaybackOptions(osg::ApplicationUsage& usage)
         "the first frame, in a window; 8 for --frame-range and --movie). --range fixes it.");
     usage.addCommandLineOption("--cache-mb <m>", "The decoded frames kept for playback, in MiB (default 256; "
                                                  "at least two frames).");
-}
-
-bool parseFrameRange(const std::string& text, PlaybackOptions& options)
-{
-    static const std::regex pattern("^(\\d+):(\\d*)(?::(\\d+))?$");
-    std::smatch match;
-    if (!std::regex_match(text, match, pattern))
-        return false;
-    unsigned long long first = 0, last = 0, step = 1;
-    if (!parseCount(match[1], first) || (match[2].length() > 0 && !parseCount(match[2], last)) ||
-        (match[3].matched && !parseCount(match[3], step)) || step == 0 || step > 1000000)
-        return false;
-    if (match[2].length() > 0 && last < first)
-        return false;
-    options.hasFrameRange = true;
-    options.first = static_cast<std::size_t>(first);
-    options.last = match[2].length() > 0 ? static_cast<std::size_t>(last) : SIZE_MAX;
-    options.rangeStep = static_cast<unsigned int>(step);
-    return true;
 }
 
 bool readPlaybackOptions(osg::ArgumentParser& arguments, PlaybackOptions& options, std::string& error)
@@ -96,7 +60,8 @@ bool readPlaybackOptions(osg::ArgumentParser& arguments, PlaybackOptions& option
         options.step = value;
     }
     std::string range;
-    if (arguments.read("--frame-range", range) && !parseFrameRange(range, options))
+    if (arguments.read("--frame-range", range) &&
+        !(options.hasFrameRange = osgGlyphsData::parseFrameRange(range, options.range)))
     {
         error = "--frame-range '" + range +
                 "': expected first:last or first:last:step (first: to the last "

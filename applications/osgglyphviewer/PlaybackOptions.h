@@ -3,6 +3,8 @@
 #ifndef OSGGLYPHVIEWER_PLAYBACKOPTIONS_H
 #define OSGGLYPHVIEWER_PLAYBACKOPTIONS_H 1
 
+#include <osgGlyphsData/FrameSource>
+
 #include <osg/ApplicationUsage>
 #include <osg/ArgumentParser>
 
@@ -12,17 +14,15 @@
 /** How a trajectory plays. */
 struct PlaybackOptions
 {
-    bool play = false;             // --play: start playing in the window
-    double framesPerSecond = 10.0; // --fps: pictures per second (and of --movie)
-    unsigned int subframes = 0;    // --interpolate n: pictures between two stored frames
-    bool smooth = false;           // --smooth: Catmull-Rom instead of straight lines
-    int step = 1;                  // --step n: every n-th frame
-    bool loop = true;              // --no-loop: stop at the end
-    bool hasFrameRange = false;    // --frame-range a:b[:step]: offscreen, a picture per frame
-    std::size_t first = 0;
-    std::size_t last = SIZE_MAX; // "a:" runs to the last frame
-    unsigned int rangeStep = 1;
-    std::string movie;            // --movie out.mp4
+    bool play = false;               // --play: start playing in the window
+    double framesPerSecond = 10.0;   // --fps: pictures per second (and of --movie)
+    unsigned int subframes = 0;      // --interpolate n: pictures between two stored frames
+    bool smooth = false;             // --smooth: Catmull-Rom instead of straight lines
+    int step = 1;                    // --step n: every n-th frame
+    bool loop = true;                // --no-loop: stop at the end
+    bool hasFrameRange = false;      // --frame-range a:b[:step]: offscreen, a picture per frame
+    osgGlyphsData::FrameRange range; // "a:" runs to the last frame
+    std::string movie;               // --movie out.mp4
     unsigned int rangeSample = 0; // --range-sample n: frames the colour range is taken over; 0: the default
     std::size_t cacheMegabytes = 256; // --cache-mb
 };
@@ -31,8 +31,5 @@ void describePlaybackOptions(osg::ApplicationUsage& usage);
 
 /** Reads the options above; false with a one-line error on a bad value. */
 bool readPlaybackOptions(osg::ArgumentParser& arguments, PlaybackOptions& options, std::string& error);
-
-/** Parses "a:b", "a:b:step" or "a:" (to the last frame); false when it is none of them. */
-bool parseFrameRange(const std::string& text, PlaybackOptions& options);
 
 #endif

@@ -84,7 +84,7 @@ osg::ref_ptr<ViewerScene> createTrajectoryScene(const ViewerOptions& options, st
         return nullptr;
     if (options.follow && !waitForFrames(*source, options.frame + 1, options.followTimeout, error))
         return nullptr;
-    const std::size_t first = options.playback.hasFrameRange ? options.playback.first : options.frame;
+    const std::size_t first = options.playback.hasFrameRange ? options.playback.range.first : options.frame;
     if (std::max<std::size_t>(first, options.frame) >= source->getNumFrames())
         source->waitForIndex();
     if (options.frame >= source->getNumFrames())

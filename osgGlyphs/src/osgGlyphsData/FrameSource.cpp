@@ -11,6 +11,7 @@
 #include <atomic>
 #include <cctype>
 #include <condition_variable>
+#include <cstdlib>
 #include <mutex>
 #include <thread>
 
@@ -535,5 +536,41 @@ bool osgGlyphsData::formatFramePath(const std::string& pattern, uint64_t number,
     if (static_cast<int>(digits.size()) < width)
         digits.insert(0, static_cast<std::size_t>(width) - digits.size(), zeros ? '0' : ' ');
     name = pattern.substr(0, percent) + digits + pattern.substr(at + 1);
+    return true;
+}
+
+namespace
+{
+
+/** The largest step, so that frame + step cannot overflow. */
+const unsigned long long MAX_FRAME_STEP = 1000000;
+
+bool parseCount(const std::string& text, unsigned long long& value)
+{
+    if (text.empty() || text.size() > 18 || text.find_first_not_of("0123456789") != std::string::npos)
+        return false;
+    value = std::strtoull(text.c_str(), nullptr, 10);
+    return true;
+}
+
+}
+
+bool osgGlyphsData::parseFrameRange(const std::string& text, FrameRange& range)
+{
+    const std::size_t colon = text.find(':');
+    if (colon == std::string::npos)
+        return false;
+    const std::size_t second = text.find(':', colon + 1);
+    const std::string last =
+        text.substr(colon + 1, second == std::string::npos ? std::string::npos : second - colon - 1);
+    unsigned long long first = 0, end = 0, step = 1;
+    if (!parseCount(text.substr(0, colon), first) || (!last.empty() && !parseCount(last, end)) ||
+        (second != std::string::npos && !parseCount(text.substr(second + 1), step)))
+        return false;
+    if (step == 0 || step > MAX_FRAME_STEP || (!last.empty() && end < first))
+        return false;
+    range.first = static_cast<std::size_t>(first);
+    range.last = last.empty() ? SIZE_MAX : static_cast<std::size_t>(end);
+    range.step = static_cast<std::size_t>(step);
     return true;
 }
