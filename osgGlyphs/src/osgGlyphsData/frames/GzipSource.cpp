@@ -9,8 +9,6 @@ using namespace osgGlyphsData::frames;
 namespace
 {
 
-const std::size_t INPUT_SIZE = std::size_t(256) << 10;
-const std::size_t DISCARD_SIZE = std::size_t(64) << 10;
 const int GZIP_WINDOW_BITS = 15 + 16;
 const int RAW_WINDOW_BITS = -15;
 const char* const MAGIC = "GZCP";
@@ -59,7 +57,7 @@ bool canFollow(const GzipCheckpoints::Point* previous, const GzipCheckpoints::Po
            point.memberOut >= previous->out;
 }
 
-bool readPoint(BlobReader& reader, GzipCheckpoints::Point& point)
+bool readFields(BlobReader& reader, GzipCheckpoints::Point& point)
 {
     uint64_t crc = 0, bits = 0, packedSize = 0;
     std::string window;
@@ -75,75 +73,30 @@ bool readPoint(BlobReader& reader, GzipCheckpoints::Point& point)
 
 }
 
-GzipCheckpoints::GzipCheckpoints(uint64_t span) : _span(std::max<uint64_t>(span, 1)) {}
-
-std::size_t GzipCheckpoints::size() const
+GzipCheckpoints::GzipCheckpoints(uint64_t span)
+    : CheckpointTable(MAGIC, POINT_BYTES), _span(std::max<uint64_t>(span, 1))
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    return _points.size();
 }
 
-uint64_t GzipCheckpoints::getCoveredEnd() const
+void GzipCheckpoints::writePoint(std::string& body, const Point& point) const
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    return _coveredEnd;
+    appendLittleEndian(body, point.in, 8);
+    appendLittleEndian(body, point.out, 8);
+    appendLittleEndian(body, point.memberOut, 8);
+    appendLittleEndian(body, point.memberCrc, 4);
+    appendLittleEndian(body, uint64_t(point.bits), 1);
+    appendLittleEndian(body, point.window->size(), 4);
+    body += *point.window;
 }
 
-std::string GzipCheckpoints::toBytes() const
+bool GzipCheckpoints::readPoint(BlobReader& reader, const Point* previous, Point& point) const
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    std::string body;
-    appendLittleEndian(body, _coveredEnd, 8);
-    appendLittleEndian(body, _points.size(), 8);
-    for (const Point& point : _points)
-    {
-        appendLittleEndian(body, point.in, 8);
-        appendLittleEndian(body, point.out, 8);
-        appendLittleEndian(body, point.memberOut, 8);
-        appendLittleEndian(body, point.memberCrc, 4);
-        appendLittleEndian(body, uint64_t(point.bits), 1);
-        appendLittleEndian(body, point.window->size(), 4);
-        body += *point.window;
-    }
-    return sealCheckpoints(MAGIC, body);
-}
-
-bool GzipCheckpoints::fromBytes(const std::string& bytes)
-{
-    if (!checkSeal(bytes, MAGIC))
+    if (!readFields(reader, point) || !canFollow(previous, point))
         return false;
-    BlobReader reader(bytes);
-    uint64_t coveredEnd = 0, count = 0;
-    if (!reader.number(coveredEnd, 8) || !reader.number(count, 8) || count > reader.left() / POINT_BYTES)
-        return false;
-    std::vector<Point> points(static_cast<std::size_t>(count));
-    std::vector<unsigned char> window(WindowSize);
-    for (std::size_t i = 0; i < points.size(); ++i)
-    {
-        Point& point = points[i];
-        if (!readPoint(reader, point) || !canFollow(i ? &points[i - 1] : nullptr, point))
-            return false;
-        if (!point.isMemberStart() && !expandWindow(point, window.data()))
-            return false;
-    }
-    if (reader.left() != 0 || (!points.empty() && coveredEnd < points.back().out) ||
-        (points.empty() && coveredEnd))
-        return false;
-    std::lock_guard<std::mutex> lock(_mutex);
-    _points = std::move(points);
-    _coveredEnd = coveredEnd;
-    return true;
-}
-
-bool GzipCheckpoints::findPoint(uint64_t offset, Point& point) const
-{
-    std::lock_guard<std::mutex> lock(_mutex);
-    auto after = std::upper_bound(_points.begin(), _points.end(), offset,
-                                  [](uint64_t value, const Point& p) { return value < p.out; });
-    if (after == _points.begin())
-        return false;
-    point = *(after - 1);
-    return true;
+    if (point.isMemberStart())
+        return true;
+    std::unique_ptr<unsigned char[]> window(new unsigned char[WindowSize]);
+    return expandWindow(point, window.get());
 }
 
 bool GzipCheckpoints::wantsPoint(uint64_t runStart, uint64_t out, bool memberStart) const
@@ -171,17 +124,8 @@ void GzipCheckpoints::addPoint(uint64_t runStart, Point point)
     _points.push_back(std::move(point));
 }
 
-void GzipCheckpoints::cover(uint64_t runStart, uint64_t end)
-{
-    std::lock_guard<std::mutex> lock(_mutex);
-    if (runStart <= _coveredEnd)
-        _coveredEnd = std::max(_coveredEnd, end);
-}
-
 GzipSource::GzipSource(std::unique_ptr<SourceFile> file, std::shared_ptr<GzipCheckpoints> checkpoints)
-    : _file(std::move(file)), _checkpoints(checkpoints ? checkpoints : std::make_shared<GzipCheckpoints>()),
-      _input(*_file, INPUT_SIZE), _stream(), _packer(), _window(GzipCheckpoints::WindowSize),
-      _discard(DISCARD_SIZE)
+    : StreamSource(std::move(file), checkpoints), _stream(), _packer(), _window(GzipCheckpoints::WindowSize)
 {
     if (inflateInit2(&_stream, RAW_WINDOW_BITS) != Z_OK)
         throw std::bad_alloc();
@@ -194,48 +138,10 @@ GzipSource::~GzipSource()
         deflateEnd(&_packer);
 }
 
-std::size_t GzipSource::read(uint64_t offset, char* out, std::size_t size)
+void GzipSource::enter(const Point& point)
 {
-    moveTo(offset);
-    while (_out < offset)
-    {
-        const std::size_t skip = static_cast<std::size_t>(std::min<uint64_t>(offset - _out, _discard.size()));
-        if (produce(_discard.data(), skip) == 0)
-            break;
-    }
-    std::size_t done = 0;
-    while (done < size && _out == offset + done) // _out < offset: the content ends before offset
-    {
-        const std::size_t got = produce(reinterpret_cast<unsigned char*>(out) + done, size - done);
-        if (got == 0)
-            break;
-        done += got;
-    }
-    _checkpoints->cover(_runStart, _out);
-    return done;
-}
-
-void GzipSource::moveTo(uint64_t offset)
-{
-    GzipCheckpoints::Point point;
-    const bool found = _checkpoints->findPoint(offset, point);
-    if (_mode != Mode::Failed && offset >= _out && (!found || point.out <= _out))
+    if (point.isMemberStart())
         return;
-    restart(found ? &point : nullptr);
-}
-
-void GzipSource::restart(const GzipCheckpoints::Point* point)
-{
-    ++_restarts;
-    _out = _runStart = point ? point->out : 0;
-    _mode = Mode::MemberStart;
-    _input.seek(point ? point->in : 0);
-    if (point && !point->isMemberStart())
-        restartInside(*point);
-}
-
-void GzipSource::restartInside(const GzipCheckpoints::Point& point)
-{
     _mode = Mode::Failed;
     inflateReset2(&_stream, RAW_WINDOW_BITS);
     _raw = true;
@@ -252,27 +158,10 @@ void GzipSource::restartInside(const GzipCheckpoints::Point& point)
     inflateSetDictionary(&_stream, _window.data(), uInt(windowLength(point)));
     _memberOut = point.memberOut;
     _memberCrc = point.memberCrc;
-    _mode = Mode::Inflating;
+    _mode = Mode::Decoding;
 }
 
-std::size_t GzipSource::produce(unsigned char* out, std::size_t size)
-{
-    for (;;)
-    {
-        if (_mode == Mode::MemberStart && !startMember())
-            return 0;
-        if (_mode == Mode::Trailer)
-            readTrailer();
-        if (_mode == Mode::Inflating)
-        {
-            const std::size_t got = inflateSome(out, size);
-            if (got)
-                return got;
-        }
-    }
-}
-
-bool GzipSource::startMember()
+bool GzipSource::startUnit()
 {
     const std::size_t available = _input.fill(2);
     const uint64_t at = _input.position();
@@ -301,11 +190,11 @@ bool GzipSource::startMember()
     inflateReset2(&_stream, GZIP_WINDOW_BITS);
     _raw = false;
     _memberOut = _out;
-    _mode = Mode::Inflating;
+    _mode = Mode::Decoding;
     return true;
 }
 
-std::size_t GzipSource::inflateSome(unsigned char* out, std::size_t size)
+std::size_t GzipSource::decodeSome(unsigned char* out, std::size_t size)
 {
     if (_input.available() == 0)
         _input.fill();
@@ -317,8 +206,7 @@ std::size_t GzipSource::inflateSome(unsigned char* out, std::size_t size)
     const int result = inflate(&_stream, Z_BLOCK);
     _input.consume(available - _stream.avail_in);
     const std::size_t got = static_cast<std::size_t>(_stream.next_out - out);
-    _out += got;
-    _decoded += got;
+    advance(got);
     if (_raw)
         _memberCrc = uint32_t(crc32(_memberCrc, out, uInt(got)));
     switch (result)
@@ -327,7 +215,7 @@ std::size_t GzipSource::inflateSome(unsigned char* out, std::size_t size)
         notePoint();
         break;
     case Z_STREAM_END:
-        _mode = _raw ? Mode::Trailer : Mode::MemberStart;
+        _mode = _raw ? Mode::Trailer : Mode::UnitStart;
         break;
     case Z_BUF_ERROR: // no progress: the input is used up
         _file->fail(_input.position(), "the gzip stream ends inside a member", true);
@@ -388,11 +276,5 @@ void GzipSource::readTrailer()
     if (littleEndian32(_input.data() + 4) != uint32_t(_out - _memberOut))
         failCorrupt(at + 8, "corrupt gzip data (incorrect length check)");
     _input.consume(8);
-    _mode = Mode::MemberStart;
-}
-
-void GzipSource::failCorrupt(uint64_t byte, const std::string& what)
-{
-    _mode = Mode::Failed;
-    _file->fail(byte, what);
+    _mode = Mode::UnitStart;
 }

@@ -10,9 +10,8 @@ using namespace osgGlyphsData::frames;
 namespace
 {
 
-const std::size_t INPUT_SIZE = std::size_t(256) << 10;
-const std::size_t DISCARD_SIZE = std::size_t(64) << 10;
 const char* const MAGIC = "ZSCP";
+const std::size_t POINT_BYTES = 8 + 8; // in, out
 const uint32_t FRAME_MAGIC = 0xFD2FB528u;
 const uint32_t SKIPPABLE_MAGIC = 0x184D2A50u; // to 0x184D2A5F
 const std::size_t SKIPPABLE_HEADER = 8;
@@ -31,65 +30,17 @@ bool canFollow(const ZstdCheckpoints::Point* previous, const ZstdCheckpoints::Po
 
 }
 
-std::size_t ZstdCheckpoints::size() const
+ZstdCheckpoints::ZstdCheckpoints() : CheckpointTable(MAGIC, POINT_BYTES) {}
+
+void ZstdCheckpoints::writePoint(std::string& body, const Point& point) const
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    return _points.size();
+    appendLittleEndian(body, point.in, 8);
+    appendLittleEndian(body, point.out, 8);
 }
 
-uint64_t ZstdCheckpoints::getCoveredEnd() const
+bool ZstdCheckpoints::readPoint(BlobReader& reader, const Point* previous, Point& point) const
 {
-    std::lock_guard<std::mutex> lock(_mutex);
-    return _coveredEnd;
-}
-
-std::string ZstdCheckpoints::toBytes() const
-{
-    std::lock_guard<std::mutex> lock(_mutex);
-    std::string body;
-    appendLittleEndian(body, _coveredEnd, 8);
-    appendLittleEndian(body, _points.size(), 8);
-    for (const Point& point : _points)
-    {
-        appendLittleEndian(body, point.in, 8);
-        appendLittleEndian(body, point.out, 8);
-    }
-    return sealCheckpoints(MAGIC, body);
-}
-
-bool ZstdCheckpoints::fromBytes(const std::string& bytes)
-{
-    if (!checkSeal(bytes, MAGIC))
-        return false;
-    BlobReader reader(bytes);
-    uint64_t coveredEnd = 0, count = 0;
-    if (!reader.number(coveredEnd, 8) || !reader.number(count, 8) || count != reader.left() / 16 ||
-        reader.left() % 16 != 0)
-        return false;
-    std::vector<Point> points(static_cast<std::size_t>(count));
-    for (std::size_t i = 0; i < points.size(); ++i)
-    {
-        if (!reader.number(points[i].in, 8) || !reader.number(points[i].out, 8) ||
-            !canFollow(i ? &points[i - 1] : nullptr, points[i]))
-            return false;
-    }
-    if ((!points.empty() && coveredEnd < points.back().out) || (points.empty() && coveredEnd))
-        return false;
-    std::lock_guard<std::mutex> lock(_mutex);
-    _points = std::move(points);
-    _coveredEnd = coveredEnd;
-    return true;
-}
-
-bool ZstdCheckpoints::findPoint(uint64_t offset, Point& point) const
-{
-    std::lock_guard<std::mutex> lock(_mutex);
-    auto after = std::upper_bound(_points.begin(), _points.end(), offset,
-                                  [](uint64_t value, const Point& p) { return value < p.out; });
-    if (after == _points.begin())
-        return false;
-    point = *(after - 1);
-    return true;
+    return reader.number(point.in, 8) && reader.number(point.out, 8) && canFollow(previous, point);
 }
 
 void ZstdCheckpoints::addPoint(uint64_t runStart, const Point& point)
@@ -103,16 +54,8 @@ void ZstdCheckpoints::addPoint(uint64_t runStart, const Point& point)
     _coveredEnd = std::max(_coveredEnd, point.out);
 }
 
-void ZstdCheckpoints::cover(uint64_t runStart, uint64_t end)
-{
-    std::lock_guard<std::mutex> lock(_mutex);
-    if (runStart <= _coveredEnd)
-        _coveredEnd = std::max(_coveredEnd, end);
-}
-
 ZstdSource::ZstdSource(std::unique_ptr<SourceFile> file, std::shared_ptr<ZstdCheckpoints> checkpoints)
-    : _file(std::move(file)), _checkpoints(checkpoints ? checkpoints : std::make_shared<ZstdCheckpoints>()),
-      _input(*_file, INPUT_SIZE), _context(ZSTD_createDCtx()), _discard(DISCARD_SIZE)
+    : StreamSource(std::move(file), checkpoints), _context(ZSTD_createDCtx())
 {
     if (!_context)
         throw std::bad_alloc();
@@ -123,55 +66,7 @@ ZstdSource::~ZstdSource()
     ZSTD_freeDCtx(_context);
 }
 
-std::size_t ZstdSource::read(uint64_t offset, char* out, std::size_t size)
-{
-    moveTo(offset);
-    while (_out < offset)
-    {
-        const std::size_t skip = static_cast<std::size_t>(std::min<uint64_t>(offset - _out, _discard.size()));
-        if (produce(_discard.data(), skip) == 0)
-            break;
-    }
-    std::size_t done = 0;
-    while (done < size && _out == offset + done) // _out < offset: the content ends before offset
-    {
-        const std::size_t got = produce(reinterpret_cast<unsigned char*>(out) + done, size - done);
-        if (got == 0)
-            break;
-        done += got;
-    }
-    _checkpoints->cover(_runStart, _out);
-    return done;
-}
-
-void ZstdSource::moveTo(uint64_t offset)
-{
-    ZstdCheckpoints::Point point;
-    const bool found = _checkpoints->findPoint(offset, point);
-    if (_mode != Mode::Failed && offset >= _out && (!found || point.out <= _out))
-        return;
-    ++_restarts;
-    _out = _runStart = found ? point.out : 0;
-    _input.seek(found ? point.in : 0);
-    _mode = Mode::FrameStart;
-}
-
-std::size_t ZstdSource::produce(unsigned char* out, std::size_t size)
-{
-    for (;;)
-    {
-        if (_mode == Mode::FrameStart && !startFrame())
-            return 0;
-        if (_mode == Mode::Decoding)
-        {
-            const std::size_t got = decodeSome(out, size);
-            if (got)
-                return got;
-        }
-    }
-}
-
-bool ZstdSource::startFrame()
+bool ZstdSource::startUnit()
 {
     const std::size_t available = _input.fill(4);
     const uint64_t at = _input.position();
@@ -221,13 +116,12 @@ std::size_t ZstdSource::decodeSome(unsigned char* out, std::size_t size)
     ZSTD_outBuffer output = {out, size, 0};
     const std::size_t result = ZSTD_decompressStream(_context, &output, &input);
     _input.consume(input.pos);
-    _out += output.pos;
-    _decoded += output.pos;
+    advance(output.pos);
     if (ZSTD_isError(result))
         failCorrupt(_input.position(), std::string("corrupt zstd data (") + ZSTD_getErrorName(result) + ")");
     _wanted = std::max<std::size_t>(result, 1);
     if (result == 0)
-        _mode = Mode::FrameStart;
+        _mode = Mode::UnitStart;
     else if (input.pos == 0 && output.pos == 0)
     {
         if (input.size == 0)
@@ -235,10 +129,4 @@ std::size_t ZstdSource::decodeSome(unsigned char* out, std::size_t size)
         failCorrupt(_input.position(), "corrupt zstd data (the decoder made no progress)");
     }
     return output.pos;
-}
-
-void ZstdSource::failCorrupt(uint64_t byte, const std::string& what)
-{
-    _mode = Mode::Failed;
-    _file->fail(byte, what);
 }
