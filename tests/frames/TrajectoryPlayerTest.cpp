@@ -243,6 +243,11 @@ TEST(FrameCache, TwoHundredFramesInABoundedBudget)
     EXPECT_GE(statistics.decoded, 200u);
     EXPECT_EQ(statistics.hits + statistics.misses, 200u);
     // The process's peak memory stays where it was after 20 frames: nothing grows with the frames
-    // (200 frames of 2000 atoms hold 200 x 48 kB = 9.6 MB of columns).
+    // (200 frames of 2000 atoms hold 200 x 48 kB = 9.6 MB of columns). Not under the sanitizers,
+    // whose quarantine keeps freed memory resident on purpose.
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
     EXPECT_LT(peakResidentKiB() - residentAt20, 4096u);
+#else
+    (void)residentAt20;
+#endif
 }
