@@ -98,6 +98,17 @@ struct FrameSource::Impl
         return openByteSource(path, compression, checkpoints, error);
     }
 
+    /** How a frame is read: one frame, this process's share; its warnings are the index's to give. */
+    PointReadOptions oneFrame(const std::string& format) const
+    {
+        PointReadOptions read;
+        read.format = format;
+        read.maxFrames = 1;
+        read.share = options.share;
+        read.warning = [](const std::string&) {};
+        return read;
+    }
+
     void giveBack(std::unique_ptr<ByteSource> source) const
     {
         std::lock_guard<std::mutex> lock(sourcesMutex);
@@ -209,12 +220,8 @@ osg::ref_ptr<PointData> FrameSource::readFrame(std::size_t frame, std::string& e
     std::unique_ptr<ByteSource> source = _impl->takeSource(_path, error);
     if (!source)
         return nullptr;
-    PointReadOptions options;
-    options.format = _format;
-    options.maxFrames = 1;
-    options.share = _impl->options.share;
+    PointReadOptions options = _impl->oneFrame(_format);
     options.start = {info.offset, info.line, info.fileFrame};
-    options.warning = [](const std::string&) {}; // the index reported what the frame lacks
     osg::ref_ptr<PointDataset> dataset =
         readRange(*source, info.offset, info.end, _format, _path, options, error);
     _impl->giveBack(std::move(source));
@@ -405,12 +412,8 @@ bool FrameSource::openFirstFrame(std::string& error)
     std::unique_ptr<ByteSource> source = _impl->takeSource(_path, error);
     if (!source)
         return false;
-    PointReadOptions options;
-    options.format = _format;
-    options.maxFrames = 1;
+    PointReadOptions options = _impl->oneFrame(_format);
     options.growing = _impl->options.growing;
-    options.share = _impl->options.share;
-    options.warning = [](const std::string&) {}; // the index scan reports them
     const uint64_t end = _impl->compression == Compression::None ? _impl->stamp.size : UINT64_MAX;
     osg::ref_ptr<PointDataset> dataset = readRange(*source, 0, end, _format, _path, options, error);
     _impl->giveBack(std::move(source));
