@@ -20,6 +20,16 @@ const std::size_t MAX_LOOKAHEAD = 64;
 /** The frames a cache holds whatever their size: a pair to interpolate between. */
 const std::size_t MIN_FRAMES = 2;
 
+/** Reads a frame from the source, timing it. */
+osg::ref_ptr<PointData> decode(const FrameSource& source, std::size_t frame, std::string& error,
+                               double& seconds)
+{
+    const auto start = std::chrono::steady_clock::now();
+    osg::ref_ptr<PointData> data = source.readFrame(frame, error);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return data;
+}
+
 struct Entry
 {
     osg::ref_ptr<PointData> data;
@@ -109,6 +119,18 @@ struct FrameCache::Impl
         return false;
     }
 
+    /** The frame if it is held (its error for one that failed), counted as a hit or a miss. */
+    bool lookUp(std::size_t frame, osg::ref_ptr<const PointData>& data, std::string& error)
+    {
+        auto found = frames.find(frame);
+        ++(found != frames.end() ? statistics.hits : statistics.misses);
+        if (found == frames.end())
+            return false;
+        error = found->second.error;
+        data = found->second.data;
+        return true;
+    }
+
     /** Drops frames farther than k ahead until another frame fits; false when it cannot. */
     bool makeRoom(uint64_t budget, std::size_t numFrames, std::size_t k)
     {
@@ -195,10 +217,8 @@ FrameCache::FrameCache(FrameSource* source, uint64_t budgetBytes)
                 impl.inFlight.insert(next);
                 lock.unlock();
                 std::string error;
-                const auto start = std::chrono::steady_clock::now();
-                osg::ref_ptr<PointData> data = _source->readFrame(next, error);
-                const double seconds =
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                double seconds = 0.0;
+                osg::ref_ptr<PointData> data = decode(*_source, next, error, seconds);
                 lock.lock();
                 impl.store(next, data, error, seconds, _budget, _source->getNumFrames());
             }
@@ -223,14 +243,9 @@ uint64_t FrameCache::getFrameBytes(const PointData& frame)
 osg::ref_ptr<const PointData> FrameCache::tryGetFrame(std::size_t frame, std::string& error)
 {
     std::lock_guard<std::mutex> lock(_impl->mutex);
-    auto found = _impl->frames.find(frame);
-    if (found != _impl->frames.end())
-    {
-        ++_impl->statistics.hits;
-        error = found->second.error;
-        return found->second.data;
-    }
-    ++_impl->statistics.misses;
+    osg::ref_ptr<const PointData> data;
+    if (_impl->lookUp(frame, data, error))
+        return data;
     if (!_impl->inFlight.count(frame))
     {
         _impl->requests.push_front(frame);
@@ -243,19 +258,13 @@ osg::ref_ptr<const PointData> FrameCache::getFrame(std::size_t frame, std::strin
 {
     std::unique_lock<std::mutex> lock(_impl->mutex);
     _impl->decoded.wait(lock, [&] { return !_impl->inFlight.count(frame); });
-    auto found = _impl->frames.find(frame);
-    if (found != _impl->frames.end())
-    {
-        ++_impl->statistics.hits;
-        error = found->second.error;
-        return found->second.data;
-    }
-    ++_impl->statistics.misses;
+    osg::ref_ptr<const PointData> held;
+    if (_impl->lookUp(frame, held, error))
+        return held;
     _impl->inFlight.insert(frame);
     lock.unlock();
-    const auto start = std::chrono::steady_clock::now();
-    osg::ref_ptr<PointData> data = _source->readFrame(frame, error);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double seconds = 0.0;
+    osg::ref_ptr<PointData> data = decode(*_source, frame, error, seconds);
     lock.lock();
     _impl->store(frame, data, error, seconds, _budget, _source->getNumFrames());
     _impl->wake.notify_all();
