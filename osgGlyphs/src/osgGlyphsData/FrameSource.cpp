@@ -55,6 +55,8 @@ struct FrameSource::Impl
     FrameSourceOptions options;
     Compression compression = Compression::None;
     std::shared_ptr<Checkpoints> checkpoints;
+    /** Of a format read as a FrameFile, which finds its own frames (no index, no scan). */
+    osg::ref_ptr<FrameFile> frameFile;
 
     mutable std::mutex mutex; // everything below up to the sources
     mutable std::condition_variable indexed;
@@ -132,12 +134,16 @@ std::string FrameSource::getCompressionName() const
 
 std::size_t FrameSource::getNumFrames() const
 {
+    if (_impl->frameFile)
+        return _impl->frameFile->getNumFrames();
     std::lock_guard<std::mutex> lock(_impl->mutex);
     return _impl->frames.size();
 }
 
 FrameInfo FrameSource::getFrameInfo(std::size_t frame) const
 {
+    if (_impl->frameFile)
+        return _impl->frameFile->getFrameInfo(frame);
     std::lock_guard<std::mutex> lock(_impl->mutex);
     return frame < _impl->frames.size() ? _impl->frames[frame] : FrameInfo();
 }
@@ -198,6 +204,19 @@ osg::ref_ptr<PointDataset> readRange(ByteSource& source, uint64_t begin, uint64_
 
 osg::ref_ptr<PointData> FrameSource::readFrame(std::size_t frame, std::string& error) const
 {
+    if (_impl->frameFile)
+    {
+        if (frame >= _impl->frameFile->getNumFrames())
+        {
+            error = _path + ": no frame " + std::to_string(frame) + " (" +
+                    std::to_string(_impl->frameFile->getNumFrames()) + " frames)";
+            return nullptr;
+        }
+        osg::ref_ptr<PointData> data = _impl->frameFile->readFrame(frame, _impl->options.share, error);
+        if (data)
+            data->setSource(_path);
+        return data;
+    }
     if (_impl->singleFrame)
     {
         if (frame == 0)
@@ -374,6 +393,37 @@ bool FrameSource::reuseIndex(ScanPosition& resumeAt)
     return true;
 }
 
+bool FrameSource::openFrameFile(std::string& error)
+{
+    if (_impl->compression != Compression::None)
+    {
+        error = _path + ": " + _format + " files are read by seeking in them; a " +
+                compressionName(_impl->compression) + "-compressed one cannot be: decompress it first";
+        return false;
+    }
+    std::string shareError;
+    if (!checkPointShare(_impl->options.share, shareError))
+    {
+        error = _path + ": " + shareError;
+        return false;
+    }
+    FrameFileOptions options;
+    options.datasets = _impl->options.datasets;
+    _impl->frameFile = osgGlyphsData::openFrameFile(_path, _format, options, error);
+    if (!_impl->frameFile)
+        return false;
+    for (const std::string& warning : _impl->frameFile->getWarnings())
+        _impl->warn(warning);
+    if (_impl->frameFile->getNumFrames() == 0)
+    {
+        error = _path + ": no frames";
+        return false;
+    }
+    _impl->complete = true;
+    _firstFrame = readFrame(0, error);
+    return _firstFrame.valid();
+}
+
 bool FrameSource::openSingleFrame(std::string& error)
 {
     PointReadOptions options;
@@ -447,6 +497,8 @@ osg::ref_ptr<FrameSource> FrameSource::open(const std::string& path, const Frame
     }
     if (!stampFile(path, impl.stamp, error))
         return nullptr;
+    if (isFrameFileFormat(source->_format))
+        return source->openFrameFile(error) ? source : nullptr;
     if (impl.compression != Compression::None)
     {
         std::unique_ptr<ByteSource> first = openByteSource(path, impl.compression, nullptr, error);

@@ -4,8 +4,10 @@
 # and the list of osgdb_<extension> links to osgdb_glyphs (OSGGLYPHS_PLUGIN_ALIASES).
 #
 # osgglyphs_point_format(<name> <reader> <description> EXTENSIONS <extension>...
-#                        [PREFIXES <prefix>...] [NO_PLUGIN_ALIASES])
-#   <reader>           the function of readers/Readers.h that reads it
+#                        [PREFIXES <prefix>...] [FRAME_FILE] [NO_PLUGIN_ALIASES])
+#   <reader>           the function of readers/Readers.h that reads it from a stream, or with
+#                      FRAME_FILE the function of formats/Formats.h that opens it as a FrameFile
+#                      (binary formats read at any frame; see osgGlyphsData/FrameFile)
 #   EXTENSIONS         lower case, without the dot
 #   PREFIXES           file names starting with one of these are of this format too
 #   NO_PLUGIN_ALIASES  another osgDB plugin owns the extensions: osgdb_glyphs reads those files
@@ -15,14 +17,19 @@ set(OSGGLYPHS_POINT_FORMAT_ROWS "")
 set(OSGGLYPHS_PLUGIN_ALIASES "")
 
 function(osgglyphs_point_format name reader description)
-    cmake_parse_arguments(ARG "NO_PLUGIN_ALIASES" "" "EXTENSIONS;PREFIXES" ${ARGN})
+    cmake_parse_arguments(ARG "NO_PLUGIN_ALIASES;FRAME_FILE" "" "EXTENSIONS;PREFIXES" ${ARGN})
     if(NOT ARG_EXTENSIONS OR ARG_UNPARSED_ARGUMENTS)
         message(FATAL_ERROR "osgglyphs_point_format(${name}): give EXTENSIONS, and nothing else unnamed")
     endif()
     list(JOIN ARG_EXTENSIONS " " extensions)
     list(JOIN ARG_PREFIXES " " prefixes)
+    if(ARG_FRAME_FILE)
+        set(functions "nullptr, formats::${reader}")
+    else()
+        set(functions "readers::${reader}, nullptr")
+    endif()
     string(APPEND OSGGLYPHS_POINT_FORMAT_ROWS
-        "    {\"${name}\", \"${description}\", readers::${reader}, \"${extensions}\", \"${prefixes}\"},\n")
+        "    {\"${name}\", \"${description}\", ${functions}, \"${extensions}\", \"${prefixes}\"},\n")
     set(OSGGLYPHS_POINT_FORMAT_ROWS "${OSGGLYPHS_POINT_FORMAT_ROWS}" PARENT_SCOPE)
     if(NOT ARG_NO_PLUGIN_ALIASES)
         list(APPEND OSGGLYPHS_PLUGIN_ALIASES ${ARG_EXTENSIONS})
@@ -36,3 +43,4 @@ osgglyphs_point_format(lammps readLammps "LAMMPS text dump" EXTENSIONS lammpstrj
 # OSG's own ply plugin reads .ply files as meshes.
 osgglyphs_point_format(ply readPly "PLY vertices as glyphs" EXTENSIONS ply NO_PLUGIN_ALIASES)
 osgglyphs_point_format(vtk readVtk "Legacy VTK points as glyphs" EXTENSIONS vtk)
+osgglyphs_point_format(dcd openDcd "DCD trajectory (CHARMM, NAMD, LAMMPS)" EXTENSIONS dcd FRAME_FILE)

@@ -1,7 +1,8 @@
 #include <osgGlyphsData/PointReader>
 
-#include "PointFormatTable.h"
+#include "FormatRegistry.h"
 #include "readers/Fields.h"
+#include "readers/Readers.h"
 
 #include <osg/Notify>
 
@@ -19,40 +20,6 @@ using namespace osgGlyphsData::readers;
 
 namespace
 {
-
-std::vector<std::string> splitWords(const char* text)
-{
-    std::vector<std::string_view> fields;
-    splitBlanks(text, fields);
-    return std::vector<std::string>(fields.begin(), fields.end());
-}
-
-bool hasExtension(const PointFormat& format, const std::string& extension)
-{
-    return std::find(format.extensions.begin(), format.extensions.end(), extension) !=
-           format.extensions.end();
-}
-
-/** The row of a format name or of one of its extensions, or nullptr. */
-const detail::PointFormatRow* findFormat(const std::string& name)
-{
-    const std::string lower = toLower(name);
-    const std::vector<PointFormat>& formats = getPointFormats(); // in the order of the rows
-    for (std::size_t i = 0; i < formats.size(); ++i)
-    {
-        if (lower == formats[i].name || hasExtension(formats[i], lower))
-            return &detail::POINT_FORMAT_ROWS[i];
-    }
-    return nullptr;
-}
-
-std::string formatList()
-{
-    std::string list;
-    for (const std::string& name : getSupportedPointFormats())
-        list += (list.empty() ? "" : ", ") + name;
-    return list;
-}
 
 // What is left in the stream from its current position, 0 when it cannot seek.
 uint64_t remainingStreamSize(std::istream& stream)
@@ -74,47 +41,50 @@ uint64_t remainingStreamSize(std::istream& stream)
 
 } // namespace
 
-const std::vector<PointFormat>& osgGlyphsData::getPointFormats()
+namespace
 {
-    static const std::vector<PointFormat> formats = []
+
+/** Reads the frames of a FrameFile in order, as a PointDataset. */
+osg::ref_ptr<PointDataset> readFrameFile(const std::string& path, const detail::FormatEntry& entry,
+                                         const PointReadOptions& options, std::string& error)
+{
+    FrameFileOptions open;
+    open.datasets = options.datasets;
+    osg::ref_ptr<FrameFile> file = entry.open(path, open, error);
+    if (!file)
+        return nullptr;
+    osg::ref_ptr<PointDataset> dataset = new PointDataset;
+    dataset->setFormat(entry.format.name);
+    dataset->setSource(path);
+    for (const std::string& warning : file->getWarnings())
     {
-        std::vector<PointFormat> list;
-        for (const detail::PointFormatRow& row : detail::POINT_FORMAT_ROWS)
-            list.push_back({row.name, row.description, splitWords(row.extensions), splitWords(row.prefixes)});
-        return list;
-    }();
-    return formats;
+        dataset->addWarning(warning);
+        if (options.warning)
+            options.warning(warning);
+        else
+            OSG_WARN << warning << std::endl;
+    }
+    const std::size_t frames = file->getNumFrames();
+    std::size_t frame = static_cast<std::size_t>(std::min<uint64_t>(options.start.frame, frames));
+    for (; frame < frames && (options.maxFrames == 0 || dataset->getNumFrames() < options.maxFrames); ++frame)
+    {
+        osg::ref_ptr<PointData> data = file->readFrame(frame, options.share, error);
+        if (!data)
+            return nullptr;
+        data->setSource(path);
+        dataset->addFrame(data.get());
+        if (options.progress)
+            options.progress(file->getFrameInfo(frame).end, 0);
+    }
+    dataset->setEndOfCompleteFrames({file->getFrameInfo(frame == 0 ? 0 : frame - 1).end, 0, frame});
+    if (dataset->getNumFrames() == 0 && !readers::mayReadNothing(options))
+    {
+        error = path + ": no frames";
+        return nullptr;
+    }
+    return dataset;
 }
 
-std::vector<std::string> osgGlyphsData::getSupportedPointFormats()
-{
-    std::vector<std::string> names;
-    for (const PointFormat& format : getPointFormats())
-        names.push_back(format.name);
-    return names;
-}
-
-std::string osgGlyphsData::formatFromExtension(const std::string& path)
-{
-    const std::filesystem::path file(path);
-    const std::string filename = toLower(file.filename().string());
-    std::string extension = toLower(file.extension().string());
-    if (!extension.empty())
-        extension.erase(0, 1);
-    for (const PointFormat& format : getPointFormats())
-    {
-        for (const std::string& prefix : format.prefixes)
-        {
-            if (startsWith(filename, prefix))
-                return format.name;
-        }
-    }
-    for (const PointFormat& format : getPointFormats())
-    {
-        if (hasExtension(format, extension))
-            return format.name;
-    }
-    return std::string();
 }
 
 osg::ref_ptr<PointDataset> osgGlyphsData::readPointStream(std::istream& stream, const std::string& format,
@@ -122,11 +92,17 @@ osg::ref_ptr<PointDataset> osgGlyphsData::readPointStream(std::istream& stream, 
                                                           const PointReadOptions& options, std::string& error)
 {
     error.clear();
-    const detail::PointFormatRow* reader = findFormat(format);
-    if (!reader)
+    detail::FormatEntry reader;
+    if (!detail::findFormatEntry(format, reader))
     {
-        error = nameForMessages + ": unknown point format " + quote(format) + " (supported: " + formatList() +
-                ")";
+        error = nameForMessages + ": unknown point format " + quote(format) +
+                " (supported: " + detail::listFormatNames() + ")";
+        return nullptr;
+    }
+    if (!reader.read)
+    {
+        error = nameForMessages + ": " + reader.format.name +
+                " files are read by seeking in them: give a file, not a stream";
         return nullptr;
     }
 
@@ -140,7 +116,7 @@ osg::ref_ptr<PointDataset> osgGlyphsData::readPointStream(std::istream& stream, 
     TextScanner scanner(stream, nameForMessages, size, options.progress, options.start.offset,
                         options.start.line);
     osg::ref_ptr<PointDataset> dataset = new PointDataset;
-    dataset->setFormat(reader->name);
+    dataset->setFormat(reader.format.name);
     dataset->setSource(nameForMessages);
     dataset->setEndOfCompleteFrames(options.start);
     try
@@ -151,7 +127,7 @@ osg::ref_ptr<PointDataset> osgGlyphsData::readPointStream(std::istream& stream, 
                 return dataset;
             scanner.failAtLine(1, "the file is empty");
         }
-        reader->read(scanner, *dataset, options);
+        reader.read(scanner, *dataset, options);
         for (const osg::ref_ptr<PointData>& frame : dataset->getFrames())
             frame->setSource(nameForMessages);
         for (const std::string& warning : dataset->getWarnings())
@@ -188,9 +164,8 @@ osg::ref_ptr<PointDataset> osgGlyphsData::readPointFile(const std::string& path,
         format = formatFromExtension(path);
         if (format.empty())
         {
-            error = path +
-                    ": cannot tell the point format from the file name; name it (supported: " + formatList() +
-                    ")";
+            error = path + ": cannot tell the point format from the file name; name it (supported: " +
+                    detail::listFormatNames() + ")";
             return nullptr;
         }
     }
@@ -199,6 +174,17 @@ osg::ref_ptr<PointDataset> osgGlyphsData::readPointFile(const std::string& path,
     {
         error = path + ": is a directory";
         return nullptr;
+    }
+    detail::FormatEntry entry;
+    if (detail::findFormatEntry(format, entry) && entry.open)
+    {
+        std::string shareError;
+        if (!checkPointShare(options.share, shareError))
+        {
+            error = path + ": " + shareError;
+            return nullptr;
+        }
+        return readFrameFile(path, entry, options, error);
     }
     std::ifstream stream(path, std::ios::binary);
     if (!stream)
