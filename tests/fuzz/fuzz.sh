@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Runs one fuzz target for a time, from a scratch corpus seeded with tests/fuzz/corpus/<format>
-# and the samples of share/data:
-#   bash tests/fuzz/fuzz.sh <build dir> <csv|xyz|lammps|ply|vtk> <seconds>
+# Runs one fuzz target for a time, from a scratch corpus seeded with tests/fuzz/corpus/<format>,
+# the samples of share/data and the files of tests/data/formats in that format:
+#   bash tests/fuzz/fuzz.sh <build dir> <format> <seconds>
 # The scratch corpus (<build dir>/fuzz-corpus/<format>) grows from run to run; crashes, leaks and
 # inputs slower than 10 s land in <build dir>/fuzz-artifacts/<format>/. Prints libFuzzer's final
 # statistics (runs, executions per second, coverage).
@@ -14,7 +14,8 @@ corpus="$build/fuzz-corpus/$format"
 artifacts="$build/fuzz-artifacts/$format/"
 mkdir -p "$corpus" "$artifacts"
 seeds=("$source_dir/tests/fuzz/corpus/$format")
-for sample in "$source_dir"/share/data/*; do
+shopt -s globstar nullglob
+for sample in "$source_dir"/share/data/* "$source_dir"/tests/data/formats/**/*."$format"; do
     case "$format" in
     lammps) [[ "$sample" == *.lammpstrj || "$sample" == *.dump ]] ;;
     *) [[ "$sample" == *."$format" || ( "$format" == xyz && "$sample" == *.extxyz ) ]] ;;
