@@ -183,7 +183,7 @@ TEST(Dcd, FilesThatLieFailNamingTheFileFrameAndByte)
     {
         std::string name, bytes, expected;
     } cases[] = {
-        {"empty", "", "not a DCD file"},
+        {"empty", "", "the file is empty"},
         {"header only", good.substr(0, 60), "byte"},
         {"not dcd", std::string(200, 'x'), "not a DCD file"},
         {"negative atoms", withWord(atoms, -5), "the atom count is -5"},

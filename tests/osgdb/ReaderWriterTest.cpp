@@ -298,7 +298,7 @@ TEST(GlyphsPlugin, FailuresAreOneMessage)
         {"ok3.csv", "x,y,z\n1,2,3\n", "radius=-2", "osgdb_glyphs: radius '-2': must be a positive number"},
         {"ok4.csv", "x,y,z\n1,2,3\n", "frame=7", "frame 7 asked for, the file has 1"},
         {"ok5.csv", "x,y,z\n1,2,3\n", "frame=x", "osgdb_glyphs: frame 'x': a frame number from 0, or all"},
-        {"ok6.csv", "x,y,z\n1,2,3\n", "format=pdb", "unknown point format 'pdb'"},
+        {"ok6.csv", "x,y,z\n1,2,3\n", "format=netcdf", "unknown point format 'netcdf'"},
         {"empty.vtk", "", "", "empty.vtk"},
     };
     for (const Case& c : cases)

@@ -2,12 +2,19 @@
 
 #include "ReaderTestUtil.h"
 
+#include <osgGlyphsData/FrameFile>
+
 using namespace osgGlyphsData;
 using namespace readertest;
 
 TEST(PointReader, ListsItsFormats)
 {
-    EXPECT_EQ(getSupportedPointFormats(), (std::vector<std::string>{"csv", "xyz", "lammps", "ply", "vtk"}));
+    EXPECT_EQ(getSupportedPointFormats(),
+              (std::vector<std::string>{"csv", "xyz", "lammps", "ply", "vtk", "dcd", "xtc", "trr", "gsd",
+                                        "las", "pdb", "gro"}));
+    EXPECT_FALSE(isFrameFileFormat("lammps"));
+    EXPECT_TRUE(isFrameFileFormat("DCD"));
+    EXPECT_TRUE(isFrameFileFormat("laz"));
 }
 
 TEST(PointReader, TellsFormatsFromExtensions)
@@ -41,11 +48,26 @@ TEST(PointReader, DescribesEachFormatAndTheFileNamesThatSelectIt)
     EXPECT_EQ(formats[2].prefixes, std::vector<std::string>{"dump."});
 }
 
+namespace
+{
+
+std::string detailFormatList()
+{
+    std::string list;
+    for (const std::string& name : getSupportedPointFormats())
+        list += (list.empty() ? "" : ", ") + name;
+    return list;
+}
+
+}
+
 TEST(PointReader, RejectsUnknownFormatNames)
 {
     std::string error;
-    EXPECT_FALSE(readString("x\n1\n", "hdf5", error, "in.h5").valid());
-    EXPECT_EQ(error, "in.h5: unknown point format 'hdf5' (supported: csv, xyz, lammps, ply, vtk)");
+    EXPECT_FALSE(readString("x\n1\n", "netcdf", error, "in.nc").valid());
+    EXPECT_EQ(error, "in.nc: unknown point format 'netcdf' (supported: " + detailFormatList() + ")");
+    EXPECT_FALSE(readString("x\n1\n", "dcd", error, "in.dcd").valid());
+    EXPECT_EQ(error, "in.dcd: dcd files are read by seeking in them: give a file, not a stream");
     EXPECT_TRUE(readString("x\n1\n", "CSV", error).valid()) << error;
     EXPECT_TRUE(readString("1\n\nH 0 0 0\n", "extxyz", error).valid()) << error;
 }
@@ -87,7 +109,7 @@ TEST(PointReader, RejectsEmptyFilesInEveryFormat)
         const std::string path = writeFile("empty." + format, "");
         std::string error;
         EXPECT_FALSE(readPointFile(path, PointReadOptions(), error).valid()) << format;
-        EXPECT_EQ(error, path + ":1: the file is empty");
+        EXPECT_EQ(error, path + (isFrameFileFormat(format) ? "" : ":1") + ": the file is empty");
     }
 }
 

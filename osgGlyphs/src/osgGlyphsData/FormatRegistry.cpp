@@ -158,5 +158,11 @@ osg::ref_ptr<FrameFile> osgGlyphsData::openFrameFile(const std::string& path, co
         error = path + ": " + entry.format.name + " files are text, read as a stream, not as a frame file";
         return nullptr;
     }
+    std::error_code code;
+    if (!std::filesystem::is_directory(path, code) && std::filesystem::file_size(path, code) == 0 && !code)
+    {
+        error = path + ": the file is empty";
+        return nullptr;
+    }
     return entry.open(path, options, error);
 }

@@ -50,7 +50,7 @@ osg::ref_ptr<PointDataset> readFrameFile(const std::string& path, const detail::
 {
     FrameFileOptions open;
     open.datasets = options.datasets;
-    osg::ref_ptr<FrameFile> file = entry.open(path, open, error);
+    osg::ref_ptr<FrameFile> file = openFrameFile(path, entry.format.name, open, error);
     if (!file)
         return nullptr;
     osg::ref_ptr<PointDataset> dataset = new PointDataset;
