@@ -8,10 +8,12 @@
 # dump-species (labels met in another order by later ranks), dump-far (coordinates 1e6 from zero),
 # dump-frames (the second of two frames, each rank seeking to its part of each and past the rest),
 # csv-sphere (a generated CSV split by its bytes; default radius from every 3rd point),
+# dcd-frames (a DCD's fourth frame, each rank reading its records' part: tests/data/formats),
 # empty-share (fewer atoms than ranks), bad-share (a malformed atom in the last rank's share:
 # every rank ends with that one error).
 set -euo pipefail
 viewer=$1 work=$2 case=$3
+formats=$(cd "$(dirname "$0")/../data/formats" && pwd)
 mkdir -p "$work" && cd "$work"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 mpi() { local k=$1; shift; mpirun --oversubscribe -np "$k" "$viewer" "$@"; }
@@ -76,6 +78,7 @@ dump-far) dump 2500 0 atoms.lammpstrj 1000000; compare "$case" atoms.lammpstrj -
 dump-frames)
     dump 3000 0 first.lammpstrj; dump 2500 0 second.lammpstrj 0 1; cat first.lammpstrj second.lammpstrj > frames.lammpstrj
     compare "$case" frames.lammpstrj --frame 1 --color-by species ;;
+dcd-frames) compare "$case" "$formats/melt.dcd" --frame 3 ;;
 empty-share)
     dump 2 0 two.lammpstrj
     "$viewer" two.lammpstrj --offscreen --output single.png > single.log
