@@ -1,17 +1,296 @@
-// XTC: not read yet (being written).
+// XTC trajectories (GROMACS, MDAnalysis, LAMMPS' dump xtc): XDR, so big-endian; no index. A frame:
+//   magic 1995 (or 2023, whose byte count below takes 8 bytes), atoms, step (int32 each), time
+//   (float, ps), the box (3 x 3 floats: the cell's vectors a, b, c as rows, nm), atoms again;
+//   then up to 9 atoms' positions as floats, or more atoms compressed (XtcCoordinates.h): the
+//   precision, the integers' minimum and maximum (3 int32 each), the index of the size of small
+//   differences, the byte count and the bytes, padded to a multiple of 4.
+// Opening reads each frame's header and skips its bytes, so that any frame is then read directly.
+// Positions stay in nm and times in ps, as stored. The box is GROMACS's lower-triangular cell. The
+// compression runs through the whole frame, so a share decodes all of it and keeps its range.
 
+#include "BinaryFile.h"
+#include "CellBox.h"
 #include "Formats.h"
+#include "XtcCoordinates.h"
+
+#include <cmath>
 
 using namespace osgGlyphsData;
+using namespace osgGlyphsData::formats;
+
+namespace
+{
+
+const int32_t XTC_MAGIC = 1995;
+/** GROMACS 2023's magic for frames whose byte count needs 64 bits; the frames are otherwise the same. */
+const int32_t XTC_MAGIC_WIDE = 2023;
+/** magic, atoms, step, time, box, atoms again. */
+const uint64_t HEADER_BYTES = 56;
+/** precision, minimum, maximum and the size index, before the byte count. */
+const uint64_t COMPRESSED_HEADER_BYTES = 32;
+/** Up to this many atoms are stored as floats. */
+const uint32_t UNCOMPRESSED_ATOMS = 9;
+
+struct XtcFrame
+{
+    uint64_t offset = 0;
+    uint64_t end = 0;
+    int64_t step = 0;
+    float time = 0.0f;
+    uint32_t atoms = 0;
+    bool wideCount = false;
+};
+
+/** A lower-triangular GROMACS box, its rows the cell's vectors, as the frame's box. */
+void setGromacsBox(PointData& data, const float box[9])
+{
+    setCellVectors(data, osg::Vec3d(box[0], box[1], box[2]), osg::Vec3d(box[3], box[4], box[5]),
+                   osg::Vec3d(box[6], box[7], box[8]));
+}
+
+class XtcFile : public FrameFile
+{
+public:
+    explicit XtcFile(const std::string& path) : FrameFile(path, "xtc") {}
+
+    bool open(std::string& error) { return _file.open(_path, error); }
+
+    void scan()
+    {
+        if (_file.getSize() == 0)
+            FilePlace{&_path}.fail(0, "not an XTC file: it is empty");
+        uint64_t at = 0;
+        while (at < _file.getSize())
+        {
+            const FilePlace place{&_path, _frames.size()};
+            XtcFrame frame;
+            if (!readExtent(at, place, frame))
+            {
+                _warnings.push_back(place.describe(at, "the last frame is cut short (the file ends at byte " +
+                                                           std::to_string(_file.getSize()) +
+                                                           "); it is left out"));
+                break;
+            }
+            _frames.push_back(frame);
+            at = frame.end;
+        }
+    }
+
+    std::size_t getNumFrames() const override { return _frames.size(); }
+
+    FrameInfo getFrameInfo(std::size_t frame) const override
+    {
+        FrameInfo info;
+        if (frame >= _frames.size())
+            return info;
+        const XtcFrame& found = _frames[frame];
+        info.offset = found.offset;
+        info.end = found.end;
+        info.timestep = found.step;
+        info.points = found.atoms;
+        info.fileFrame = frame;
+        info.hasTime = true;
+        info.time = found.time;
+        return info;
+    }
+
+    osg::ref_ptr<PointData> readFrame(std::size_t frame, const PointShare& share,
+                                      std::string& error) const override
+    {
+        try
+        {
+            return decode(frame, share);
+        }
+        catch (const FormatError& failure)
+        {
+            error = failure.message;
+        }
+        return nullptr;
+    }
+
+private:
+    int32_t readInt(uint64_t at, const FilePlace& place, const char* what) const
+    {
+        return _file.readValue<int32_t>(at, true, place, what);
+    }
+
+    /** Reads the frame's header at offset and finds where the frame ends; false when the file ends
+     * inside the frame. Throws when the header is not an XTC frame's or its counts do not agree. */
+    bool readExtent(uint64_t offset, const FilePlace& place, XtcFrame& frame) const
+    {
+        if (!_file.holds(offset, HEADER_BYTES))
+        {
+            checkMagic(offset, place, _file.holds(offset, 4));
+            return false;
+        }
+        frame.wideCount = checkMagic(offset, place, true);
+        frame.offset = offset;
+        frame.atoms = readAtoms(offset, place);
+        frame.step = readInt(offset + 8, place, "the step");
+        frame.time = _file.readValue<float>(offset + 12, true, place, "the time");
+        uint64_t at = offset + HEADER_BYTES;
+        if (frame.atoms <= UNCOMPRESSED_ATOMS)
+            at += 12 * uint64_t(frame.atoms);
+        else
+        {
+            const uint64_t countAt = at + COMPRESSED_HEADER_BYTES;
+            if (!_file.holds(countAt, frame.wideCount ? 8 : 4))
+                return false;
+            const uint64_t count = readByteCount(countAt, frame, place);
+            at = countAt + (frame.wideCount ? 8 : 4) + (count + 3) / 4 * 4;
+        }
+        if (at > _file.getSize())
+            return false;
+        frame.end = at;
+        return true;
+    }
+
+    /** Whether the frame's byte count takes 8 bytes (magic 2023). */
+    bool checkMagic(uint64_t offset, const FilePlace& place, bool present) const
+    {
+        if (!present)
+        {
+            if (offset == 0)
+                place.fail(0, "not an XTC file: it is shorter than a frame's header");
+            return false;
+        }
+        const int32_t magic = readInt(offset, place, "the magic number");
+        if (magic == XTC_MAGIC || magic == XTC_MAGIC_WIDE)
+            return magic == XTC_MAGIC_WIDE;
+        if (offset == 0)
+            place.fail(0, "not an XTC file: it starts with " + std::to_string(magic) +
+                              ", not the magic number " + std::to_string(XTC_MAGIC));
+        place.fail(offset, "the magic number is " + std::to_string(magic) + ", not " +
+                               std::to_string(XTC_MAGIC) + " (the frame before ends here by its byte count)");
+    }
+
+    uint32_t readAtoms(uint64_t offset, const FilePlace& place) const
+    {
+        const int32_t atoms = readInt(offset + 4, place, "the atom count");
+        if (atoms < 0)
+            place.fail(offset + 4, "the atom count is " + std::to_string(atoms));
+        const int32_t again = readInt(offset + 52, place, "the atom count");
+        if (again != atoms)
+            place.fail(offset + 52, "the atom count before the coordinates is " + std::to_string(again) +
+                                        ", the frame's header says " + std::to_string(atoms));
+        return static_cast<uint32_t>(atoms);
+    }
+
+    uint64_t readByteCount(uint64_t at, const XtcFrame& frame, const FilePlace& place) const
+    {
+        int64_t count = 0;
+        if (frame.wideCount)
+            count = _file.readValue<int64_t>(at, true, place, "the byte count");
+        else
+            count = readInt(at, place, "the byte count");
+        // Each atom takes at least 2 bits (its integers when they cannot differ, and the run flag).
+        if (count < 0 || uint64_t(count) > maxXtcCompressedBytes(frame.atoms) ||
+            uint64_t(count) < frame.atoms / 4)
+            place.fail(at, "the compressed coordinates' byte count is " + std::to_string(count) + ", which " +
+                               std::to_string(frame.atoms) + " atoms cannot take");
+        return static_cast<uint64_t>(count);
+    }
+
+    osg::ref_ptr<PointData> decode(std::size_t frame, const PointShare& share) const
+    {
+        const FilePlace place{&_path, frame};
+        if (frame >= _frames.size())
+            place.fail(_file.getSize(),
+                       "no such frame (the file holds " + std::to_string(_frames.size()) + ")");
+        const XtcFrame& found = _frames[frame];
+        osg::ref_ptr<PointData> data = new PointData;
+        float box[9];
+        _file.readValues(found.offset + 16, box, 9, true, place, "the box");
+        setGromacsBox(*data, box);
+
+        std::vector<float> columns[3];
+        for (std::vector<float>& column : columns)
+            column.resize(found.atoms);
+        const uint64_t coordinates = found.offset + HEADER_BYTES;
+        if (found.atoms <= UNCOMPRESSED_ATOMS)
+            readUncompressed(coordinates, found.atoms, place, columns);
+        else
+            readCompressed(coordinates, found, place, columns);
+
+        const PointRange range = getShareRange(share, found.atoms);
+        static const char* const axes[3] = {"x", "y", "z"};
+        data->setNumPoints(std::size_t(range.end - range.begin));
+        for (int axis = 0; axis < 3; ++axis)
+        {
+            std::vector<float>& values = columns[axis];
+            if (range.end - range.begin != values.size())
+                values = std::vector<float>(values.begin() + std::ptrdiff_t(range.begin),
+                                            values.begin() + std::ptrdiff_t(range.end));
+            data->addColumn(axes[axis], std::move(values));
+        }
+        data->setTimestep(found.step);
+        data->setFilePointCount(found.atoms);
+        return data;
+    }
+
+    void readUncompressed(uint64_t at, uint32_t atoms, const FilePlace& place,
+                          std::vector<float> columns[3]) const
+    {
+        float values[3 * UNCOMPRESSED_ATOMS];
+        _file.readValues(at, values, 3 * std::size_t(atoms), true, place, "the positions");
+        static const char* const axes[3] = {"x", "y", "z"};
+        for (uint32_t atom = 0; atom < atoms; ++atom)
+        {
+            for (int axis = 0; axis < 3; ++axis)
+            {
+                const float value = values[3 * atom + uint32_t(axis)];
+                if (!std::isfinite(value))
+                    place.fail(at + 4 * (3 * atom + uint32_t(axis)), std::string(axes[axis]) + " of atom " +
+                                                                         std::to_string(atom + 1) +
+                                                                         " is not a finite number");
+                columns[axis][atom] = value;
+            }
+        }
+    }
+
+    void readCompressed(uint64_t at, const XtcFrame& frame, const FilePlace& place,
+                        std::vector<float> columns[3]) const
+    {
+        XtcCompressed header;
+        header.precision = _file.readValue<float>(at, true, place, "the precision");
+        _file.readValues(at + 4, header.minimum, 3, true, place, "the minimum");
+        _file.readValues(at + 16, header.maximum, 3, true, place, "the maximum");
+        header.smallIndex = readInt(at + 28, place, "the size index");
+        const std::string wrong = checkXtcCompressed(header);
+        if (!wrong.empty())
+            place.fail(at, wrong);
+        const uint64_t countAt = at + COMPRESSED_HEADER_BYTES;
+        const uint64_t count = readByteCount(countAt, frame, place);
+        const uint64_t bytesAt = countAt + (frame.wideCount ? 8 : 4);
+        std::vector<unsigned char> bytes(static_cast<std::size_t>(count));
+        _file.read(bytesAt, bytes.data(), bytes.size(), place, "the compressed coordinates");
+        float* const out[3] = {columns[0].data(), columns[1].data(), columns[2].data()};
+        std::size_t byte = 0;
+        const std::string error =
+            decodeXtcCoordinates(header, bytes.data(), bytes.size(), frame.atoms, out, byte);
+        if (!error.empty())
+            place.fail(bytesAt + byte, error);
+    }
+
+    BinaryFile _file;
+    std::vector<XtcFrame> _frames;
+};
+
+}
 
 osg::ref_ptr<FrameFile> formats::openXtc(const std::string& path, const FrameFileOptions&, std::string& error)
 {
-    error = path + ": XTC files are not read yet";
-    return nullptr;
-}
-
-osg::ref_ptr<FrameFile> formats::openTrr(const std::string& path, const FrameFileOptions&, std::string& error)
-{
-    error = path + ": TRR files are not read yet";
-    return nullptr;
+    osg::ref_ptr<XtcFile> file = new XtcFile(path);
+    if (!file->open(error))
+        return nullptr;
+    try
+    {
+        file->scan();
+    }
+    catch (const FormatError& failure)
+    {
+        error = failure.message;
+        return nullptr;
+    }
+    return file;
 }
