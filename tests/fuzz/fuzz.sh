@@ -13,7 +13,8 @@ target="$build/tests/fuzz/fuzz_reader_$format"
 corpus="$build/fuzz-corpus/$format"
 artifacts="$build/fuzz-artifacts/$format/"
 mkdir -p "$corpus" "$artifacts"
-seeds=("$source_dir/tests/fuzz/corpus/$format")
+seeds=()
+[[ -d "$source_dir/tests/fuzz/corpus/$format" ]] && seeds=("$source_dir/tests/fuzz/corpus/$format")
 shopt -s globstar nullglob
 for sample in "$source_dir"/share/data/* "$source_dir"/tests/data/formats/**/*."$format"; do
     case "$format" in
@@ -25,7 +26,7 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 log="$build/fuzz-artifacts/$format.log"
 status=0
-"$target" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+"$target" "$corpus" ${seeds[@]+"${seeds[@]}"} -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
     -max_len=65536 -print_final_stats=1 -artifact_prefix="$artifacts" >"$log" 2>&1 || status=$?
 grep -E '^(#[0-9]+ +(INITED|DONE)|stat::|INFO: seed corpus|SUMMARY)|ERROR|==[0-9]+==' "$log" || true
 echo "fuzz.sh: $format: exit $status, log $log"
