@@ -13,6 +13,9 @@
 #include <osgGlyphsData/SharedDataset>
 #include <osgGlyphsData/TrajectoryPlayer>
 #include <osgGlyphsTiles/TileBuilder>
+#ifdef OSGGLYPHS_HAVE_HDF5
+#include <osgGlyphsHdf5/Hdf5Formats>
+#endif
 
 #include <osg/ArgumentParser>
 #include <osgDB/FileNameUtils>
@@ -67,6 +70,8 @@ struct ConvertOptions
     std::string input;
     std::string output;
     std::string format;
+    /** --dataset (repeatable): the HDF5 datasets to read, the positions first. */
+    std::vector<std::string> datasets;
     unsigned int frame = 0;
     /** The frames converted: --frame's alone, or --frame-range's, each into an archive named by
      * output as a pattern (formatFramePath()). */
@@ -101,6 +106,9 @@ void describeOptions(osg::ApplicationUsage& usage)
                        "through an index of the file's frames, kept beside it (<input>.glyphindex) for "
                        "the next run.");
     usage.addCommandLineOption("--format <name>", "Read the input as this format whatever its extension.");
+    usage.addCommandLineOption(
+        "--dataset <path>", "Of an HDF5 input, a dataset to read (repeatable): the positions first (N x 3), "
+                            "then columns (N or N x k). Without it, H5MD and snapshots are read whole.");
     usage.addCommandLineOption(
         "--frame <n>", "The frame of a multi-frame input, counted from 0 (default 0), with the colour "
                        "range of every frame of a plain file; a compressed file's is mapped as by "
@@ -191,6 +199,8 @@ bool readOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::s
     if (!osgGlyphsData::readGlyphMappingArguments(arguments, options.mapping, error))
         return false;
     arguments.read("--format", options.format);
+    for (std::string dataset; arguments.read("--dataset", dataset);)
+        options.datasets.push_back(dataset);
     if (!readFrameOptions(arguments, options, error))
         return false;
     double count = 0.0;
@@ -368,6 +378,7 @@ ReadPoints readPoints(const ConvertOptions& options, const osgGlyphsData::PointS
 {
     osgGlyphsData::PointReadOptions read;
     read.format = options.format;
+    read.datasets = options.datasets;
     if (progress)
         read.progress = [progress](uint64_t done, uint64_t total)
         { progress->update(total ? double(done) / total : 0.0); };
@@ -603,6 +614,7 @@ bool openTrajectory(const ConvertOptions& options, ConvertProgress& progress, Tr
 {
     osgGlyphsData::FrameSourceOptions sourceOptions;
     sourceOptions.format = options.format;
+    sourceOptions.datasets = options.datasets;
     sourceOptions.warning = printWarning;
     sourceOptions.progress = [&progress](uint64_t done, uint64_t total)
     { progress.update(total ? double(done) / total : 0.0); };
@@ -739,6 +751,9 @@ int convertFrameRange(const ConvertOptions& options)
 int main(int argc, char** argv)
 {
     keepFreedMemory();
+#ifdef OSGGLYPHS_HAVE_HDF5
+    osgGlyphsHdf5::registerFormats();
+#endif
     osg::ArgumentParser arguments(&argc, argv);
     osg::ApplicationUsage* usage = arguments.getApplicationUsage();
     usage->setApplicationName(PROGRAM);

@@ -61,11 +61,13 @@ void ProgressIndicator::finish(const osgGlyphsData::PointDataset* dataset)
 
 osg::ref_ptr<osgGlyphsData::PointDataset> loadDataset(const std::string& file, const std::string& format,
                                                       bool growing, const osgGlyphsData::PointShare& share,
-                                                      std::string& error)
+                                                      std::string& error,
+                                                      const std::vector<std::string>& datasets)
 {
     ProgressIndicator progress(file);
     osgGlyphsData::PointReadOptions options;
     options.format = format;
+    options.datasets = datasets;
     options.growing = growing;
     options.share = share;
     options.progress = [&progress](uint64_t bytesRead, uint64_t totalBytes)

@@ -40,7 +40,8 @@ private:
  * dump being written) may end in a frame half written and may hold no frame yet. */
 osg::ref_ptr<osgGlyphsData::PointDataset> loadDataset(const std::string& file, const std::string& format,
                                                       bool growing, const osgGlyphsData::PointShare& share,
-                                                      std::string& error);
+                                                      std::string& error,
+                                                      const std::vector<std::string>& datasets = {});
 
 /** Appends to a dataset the frames its file completed since it was read (osgglyphviewer --follow). */
 class DatasetFollower

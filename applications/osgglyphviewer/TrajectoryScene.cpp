@@ -72,6 +72,7 @@ osg::ref_ptr<ViewerScene> createTrajectoryScene(const ViewerOptions& options, st
     ProgressIndicator progress(options.file);
     osgGlyphsData::FrameSourceOptions sourceOptions;
     sourceOptions.format = options.format;
+    sourceOptions.datasets = options.datasets;
     sourceOptions.growing = options.follow;
     sourceOptions.progress = [&progress](uint64_t bytesRead, uint64_t totalBytes)
     { progress.update(bytesRead, totalBytes); };

@@ -73,6 +73,8 @@ bool readMappingOptions(osg::ArgumentParser& arguments, ViewerOptions& options, 
 bool readInputOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std::string& error)
 {
     arguments.read("--format", options.format);
+    for (std::string dataset; arguments.read("--dataset", dataset);)
+        options.datasets.push_back(dataset);
     int value = 0;
     if (arguments.read("--frame", value))
     {
@@ -236,6 +238,9 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
                                    " (by extension). Without a file or --random, a built-in scene.");
     usage.addCommandLineOption("--format <name>",
                                "Read the file as this format (" + formats + ") whatever its extension.");
+    usage.addCommandLineOption(
+        "--dataset <path>", "Of an HDF5 file, a dataset to read (repeatable): the positions first (N x 3), "
+                            "then columns (N or N x k). Without it, H5MD and snapshots are read whole.");
     usage.addCommandLineOption("--frame <n>", "The frame of a multi-frame file to show, counted from 0 "
                                               "(default 0). Keys n and p step through the others.");
     usage.addCommandLineOption("--random <n>", "Instead of a file, the random dataset of Aguirre et al. "

@@ -39,6 +39,7 @@ struct ViewerOptions
     // Input
     std::string file;
     std::string format;
+    std::vector<std::string> datasets; // --dataset PATH (repeatable): HDF5 datasets, positions first
     unsigned int frame = 0;
     unsigned int randomCount = 0; // --random N; 0: no random dataset
     unsigned int seed = 1;

@@ -251,7 +251,7 @@ osg::ref_ptr<ViewerScene> createDatasetScene(const ViewerOptions& options, const
                                              std::string& error)
 {
     osg::ref_ptr<osgGlyphsData::PointDataset> dataset =
-        loadDataset(options.file, options.format, options.follow, sharing.share, error);
+        loadDataset(options.file, options.format, options.follow, sharing.share, error, options.datasets);
     if (!agree(sharing, dataset.valid(), error))
         return nullptr;
     // The same in every process: no need to agree on it.

@@ -18,6 +18,9 @@
 #include <osgGlyphs/ProgramErrorFilter>
 #include <osgGlyphs/Version>
 #include <osgGlyphsPaper/Techniques>
+#ifdef OSGGLYPHS_HAVE_HDF5
+#include <osgGlyphsHdf5/Hdf5Formats>
+#endif
 
 #include <osg/ArgumentParser>
 
@@ -28,6 +31,9 @@ int main(int argc, char** argv)
 {
     const auto start = std::chrono::steady_clock::now();
     osgGlyphsPaper::registerTechniques(); // --technique offers the paper's techniques too
+#ifdef OSGGLYPHS_HAVE_HDF5
+    osgGlyphsHdf5::registerFormats(); // H5MD, snapshots and --dataset
+#endif
     // A glyph program that fails is reported in one line, by the headless and the window loops.
     osg::setNotifyHandler(new osgGlyphs::ProgramErrorFilter(osg::getNotifyHandler()));
     osg::ArgumentParser arguments(&argc, argv);

@@ -5,6 +5,9 @@
 #include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsData/PointReader>
 #include <osgGlyphsPaper/Techniques>
+#ifdef OSGGLYPHS_HAVE_HDF5
+#include <osgGlyphsHdf5/Hdf5Formats>
+#endif
 
 #include <osg/Notify>
 #include <osg/Sequence>
@@ -159,6 +162,9 @@ public:
     ReaderWriterGlyphs()
     {
         osgGlyphsPaper::registerTechniques(); // the technique option offers the paper's too
+#ifdef OSGGLYPHS_HAVE_HDF5
+        osgGlyphsHdf5::registerFormats(); // before the extensions are listed
+#endif
         supportsExtension(PSEUDO_EXTENSION, "Pseudo-loader: <file>.glyphs reads <file> as glyphs");
         std::string formats;
         for (const osgGlyphsData::PointFormat& format : osgGlyphsData::getPointFormats())
