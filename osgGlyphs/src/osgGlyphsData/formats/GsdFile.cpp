@@ -39,6 +39,8 @@ const uint64_t ENTRY_BYTES = 32;
 const uint64_t NAME_SEGMENT = 64;
 /** Index entries read at once. */
 const std::size_t ENTRIES_PER_READ = 4096;
+/** Values read at once from a per-particle chunk. */
+const std::size_t BLOCK_VALUES = 16384;
 /** Type ids are exact as floats up to 2^24. */
 const uint64_t MAX_TYPES = uint64_t(1) << 24;
 
@@ -519,20 +521,60 @@ private:
                            " for the frame's " + std::to_string(count) + " particles (particles/N)");
     }
 
+    /** Passes the share's rows of a per-particle chunk to use, converted to Out, a block of rows at
+     * a time: use(values, first row of the share, rows). Blocks keep the reads' buffer small. */
+    template <typename Out, typename Use>
+    void forEachBlock(const Chunk& chunk, const PointRange& range, const FilePlace& place, Use use) const
+    {
+        const std::size_t rows = static_cast<std::size_t>(range.end - range.begin);
+        const std::size_t width = chunk.columns;
+        const std::size_t blockRows = std::max<std::size_t>(1, BLOCK_VALUES / width);
+        std::vector<Out> block;
+        for (std::size_t row = 0; row < rows; row += blockRows)
+        {
+            const std::size_t count = std::min(blockRows, rows - row);
+            block.resize(count * width);
+            load(chunk, (range.begin + row) * width, block.size(), block.data(), place);
+            use(block.data(), row, count);
+        }
+    }
+
+    /** Spreads rows of Width values over the columns, from row first on. */
+    template <std::size_t Width>
+    static void deinterleave(const float* values, std::size_t first, std::size_t rows,
+                             std::vector<std::vector<float>>& columns)
+    {
+        float* out[Width];
+        for (std::size_t column = 0; column < Width; ++column)
+            out[column] = columns[column].data() + first;
+        for (std::size_t row = 0; row < rows; ++row)
+        {
+            for (std::size_t column = 0; column < Width; ++column)
+                out[column][row] = values[row * Width + column];
+        }
+    }
+
     /** The share's rows of a per-particle chunk, one vector per column. */
     std::vector<std::vector<float>> readRows(const Chunk& chunk, const PointRange& range,
                                              const FilePlace& place) const
     {
-        const std::size_t rows = static_cast<std::size_t>(range.end - range.begin);
         const std::size_t width = chunk.columns;
-        std::vector<float> values(rows * width);
-        load(chunk, range.begin * width, values.size(), values.data(), place);
-        std::vector<std::vector<float>> columns(width, std::vector<float>(rows));
-        for (std::size_t row = 0; row < rows; ++row)
-        {
-            for (std::size_t column = 0; column < width; ++column)
-                columns[column][row] = values[row * width + column];
-        }
+        std::vector<std::vector<float>> columns(width);
+        for (std::vector<float>& column : columns)
+            column.resize(static_cast<std::size_t>(range.end - range.begin));
+        forEachBlock<float>(chunk, range, place,
+                            [&columns, width](const float* values, std::size_t first, std::size_t rows)
+                            {
+                                if (width == 3)
+                                    return deinterleave<3>(values, first, rows, columns);
+                                if (width == 4)
+                                    return deinterleave<4>(values, first, rows, columns);
+                                for (std::size_t column = 0; column < width; ++column)
+                                {
+                                    for (std::size_t row = 0; row < rows; ++row)
+                                        columns[column][first + row] = values[row * width + column];
+                                }
+                            });
         return columns;
     }
 
@@ -607,6 +649,14 @@ private:
         return types;
     }
 
+    [[noreturn]] void failTypeId(const Chunk& chunk, uint64_t particle, int64_t id, std::size_t types,
+                                 const FilePlace& place) const
+    {
+        place.fail(chunk.location + particle * typeSize(chunk.type),
+                   "particle " + std::to_string(particle) + " has type id " + std::to_string(id) +
+                       ", particles/types names " + std::to_string(types));
+    }
+
     void addSpecies(PointData& data, std::size_t frame, const PointRange& range, const FilePlace& place) const
     {
         std::vector<std::string> types = readTypes(frame, place);
@@ -618,17 +668,16 @@ private:
             if (!isInteger(chunk->type))
                 place.fail(chunk->entryAt, std::string("particles/typeid holds ") + typeName(chunk->type) +
                                                " values, not integers");
-            std::vector<int64_t> ids(species.size());
-            load(*chunk, range.begin, ids.size(), ids.data(), place);
-            for (std::size_t i = 0; i < ids.size(); ++i)
+            const auto check = [&](const int64_t* ids, std::size_t first, std::size_t rows)
             {
-                if (ids[i] < 0 || uint64_t(ids[i]) >= types.size())
-                    place.fail(chunk->location + (range.begin + i) * typeSize(chunk->type),
-                               "particle " + std::to_string(range.begin + i) + " has type id " +
-                                   std::to_string(ids[i]) + ", particles/types names " +
-                                   std::to_string(types.size()));
-                species[i] = static_cast<float>(ids[i]);
-            }
+                for (std::size_t i = 0; i < rows; ++i)
+                {
+                    if (ids[i] < 0 || uint64_t(ids[i]) >= types.size())
+                        failTypeId(*chunk, range.begin + first + i, ids[i], types.size(), place);
+                    species[first + i] = static_cast<float>(ids[i]);
+                }
+            };
+            forEachBlock<int64_t>(*chunk, range, place, check);
         }
         else if (types.empty() && !species.empty())
             place.fail(_extents[frame].first, "particles/types is empty: no type for particles of type id 0");
