@@ -11,7 +11,7 @@ TEST(PointReader, ListsItsFormats)
 {
     EXPECT_EQ(getSupportedPointFormats(),
               (std::vector<std::string>{"csv", "xyz", "lammps", "ply", "vtk", "dcd", "xtc", "trr", "gsd",
-                                        "las", "pdb", "gro"}));
+                                        "las", "pdb", "gro", "lammpsdata"}));
     EXPECT_FALSE(isFrameFileFormat("lammps"));
     EXPECT_TRUE(isFrameFileFormat("DCD"));
     EXPECT_TRUE(isFrameFileFormat("laz"));

@@ -1,6 +1,7 @@
 #include <osgGlyphsData/FrameSource>
 #include <osgGlyphsData/PointReader>
 
+#include "FrameTopology.h"
 #include "frames/ByteRangeStream.h"
 #include "frames/ByteSource.h"
 #include "frames/FrameIndexFile.h"
@@ -57,6 +58,8 @@ struct FrameSource::Impl
     std::shared_ptr<Checkpoints> checkpoints;
     /** Of a format read as a FrameFile, which finds its own frames (no index, no scan). */
     osg::ref_ptr<FrameFile> frameFile;
+    /** The atoms of FrameSourceOptions::topology, given to every frame. */
+    std::unique_ptr<FrameTopology> topology;
 
     mutable std::mutex mutex; // everything below up to the sources
     mutable std::condition_variable indexed;
@@ -203,6 +206,14 @@ osg::ref_ptr<PointDataset> readRange(ByteSource& source, uint64_t begin, uint64_
 }
 
 osg::ref_ptr<PointData> FrameSource::readFrame(std::size_t frame, std::string& error) const
+{
+    osg::ref_ptr<PointData> data = readFileFrame(frame, error);
+    if (data && _impl->topology && !_impl->topology->apply(*data, _impl->options.share, _path, frame, error))
+        return nullptr;
+    return data;
+}
+
+osg::ref_ptr<PointData> FrameSource::readFileFrame(std::size_t frame, std::string& error) const
 {
     if (_impl->frameFile)
     {
@@ -480,6 +491,23 @@ bool FrameSource::openFirstFrame(std::string& error)
 
 osg::ref_ptr<FrameSource> FrameSource::open(const std::string& path, const FrameSourceOptions& options,
                                             std::string& error)
+{
+    osg::ref_ptr<FrameSource> source = openFile(path, options, error);
+    if (source && !options.topology.empty() && !source->attachTopology(error))
+        return nullptr;
+    return source;
+}
+
+bool FrameSource::attachTopology(std::string& error)
+{
+    const FrameSourceOptions& options = _impl->options;
+    _impl->topology = FrameTopology::read(options.topology, options.topologyFormat,
+                                          [this](const std::string& warning) { _impl->warn(warning); }, error);
+    return _impl->topology && _impl->topology->apply(*_firstFrame, options.share, _path, 0, error);
+}
+
+osg::ref_ptr<FrameSource> FrameSource::openFile(const std::string& path, const FrameSourceOptions& options,
+                                                std::string& error)
 {
     osg::ref_ptr<FrameSource> source = new FrameSource;
     Impl& impl = *source->_impl;

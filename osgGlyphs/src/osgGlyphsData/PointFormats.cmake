@@ -50,3 +50,4 @@ osgglyphs_point_format(gsd openGsd "HOOMD-blue GSD trajectory" EXTENSIONS gsd FR
 osgglyphs_point_format(las openLas "ASPRS LAS lidar points (LAS 1.2-1.4)" EXTENSIONS las laz FRAME_FILE)
 osgglyphs_point_format(pdb openPdb "Protein Data Bank coordinates (models as frames)" EXTENSIONS pdb ent FRAME_FILE)
 osgglyphs_point_format(gro openGro "GROMACS GRO coordinates (frames)" EXTENSIONS gro FRAME_FILE)
+osgglyphs_point_format(lammpsdata readLammpsData "LAMMPS data file (write_data): atoms, masses, velocities" EXTENSIONS data lammpsdata PREFIXES data.)

@@ -32,6 +32,7 @@ void readXyz(TextScanner& scanner, PointDataset& dataset, const PointReadOptions
 void readLammps(TextScanner& scanner, PointDataset& dataset, const PointReadOptions& options);
 void readPly(TextScanner& scanner, PointDataset& dataset, const PointReadOptions& options);
 void readVtk(TextScanner& scanner, PointDataset& dataset, const PointReadOptions& options);
+void readLammpsData(TextScanner& scanner, PointDataset& dataset, const PointReadOptions& options);
 
 } // namespace readers
 }
