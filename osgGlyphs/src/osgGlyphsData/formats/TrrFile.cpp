@@ -12,6 +12,7 @@
 #include "CellBox.h"
 #include "Formats.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace osgGlyphsData;
@@ -128,45 +129,36 @@ public:
     }
 
 private:
-    int32_t readInt(uint64_t at, const FilePlace& place, const char* what) const
-    {
-        return _file.readValue<int32_t>(at, true, place, what);
-    }
-
-    double readReal(uint64_t at, uint32_t real, const FilePlace& place, const char* what) const
-    {
-        if (real == 8)
-            return _file.readValue<double>(at, true, place, what);
-        return _file.readValue<float>(at, true, place, what);
-    }
-
-    /** Reads the frame's header at offset and finds its blocks; false when the file ends inside
-     * the frame. Throws when the header is not a TRR frame's or its sizes do not agree. */
+    /** Reads the frame's header at offset (in one read) and finds its blocks; false when the file
+     * ends inside the frame. Throws when the header is not a TRR frame's or its sizes do not agree. */
     bool readExtent(uint64_t offset, const FilePlace& place, TrrFrame& frame) const
     {
-        if (!_file.holds(offset, FIXED_HEADER_BYTES))
-        {
-            if (_file.holds(offset, 4))
-                checkMagic(offset, place);
-            else if (offset == 0)
-                place.fail(0, "not a TRR file: it is shorter than a frame's header");
+        unsigned char head[FIXED_HEADER_BYTES + 16];
+        const uint64_t held = std::min<uint64_t>(sizeof(head), _file.getSize() - offset);
+        _file.read(offset, head, std::size_t(held), place, "the frame's header");
+        if (held < 4 && offset == 0)
+            place.fail(0, "not a TRR file: it is shorter than a frame's header");
+        if (held < 4)
             return false;
-        }
-        checkMagic(offset, place);
-        checkVersion(offset, place);
+        checkMagic(big<int32_t>(head), offset, place);
+        if (held < FIXED_HEADER_BYTES)
+            return false;
+        checkVersion(head, offset, place);
         int32_t sizes[BlockCount];
-        _file.readValues(offset + 24, sizes, BlockCount, true, place, "the block sizes");
-        const int32_t atoms = readInt(offset + 64, place, "the atom count");
+        for (int block = 0; block < BlockCount; ++block)
+            sizes[block] = big<int32_t>(head + 24 + 4 * block);
+        const int32_t atoms = big<int32_t>(head + 64);
         if (atoms < 0)
             place.fail(offset + 64, "the atom count is " + std::to_string(atoms));
         frame.offset = offset;
         frame.atoms = static_cast<uint32_t>(atoms);
-        frame.step = readInt(offset + 68, place, "the step");
+        frame.step = big<int32_t>(head + 68);
         frame.real = realSize(offset, sizes, frame.atoms, place);
         const uint64_t header = FIXED_HEADER_BYTES + 2 * uint64_t(frame.real);
-        if (!_file.holds(offset, header))
+        if (held < header)
             return false;
-        frame.time = readReal(offset + FIXED_HEADER_BYTES, frame.real, place, "the time");
+        frame.time =
+            frame.real == 8 ? big<double>(head + FIXED_HEADER_BYTES) : big<float>(head + FIXED_HEADER_BYTES);
         uint64_t at = offset + header;
         for (int block = 0; block < BlockCount; ++block)
         {
@@ -181,9 +173,14 @@ private:
         return true;
     }
 
-    void checkMagic(uint64_t offset, const FilePlace& place) const
+    template <typename T>
+    static T big(const unsigned char* at)
     {
-        const int32_t magic = readInt(offset, place, "the magic number");
+        return readers::loadScalar<T>(reinterpret_cast<const char*>(at), true);
+    }
+
+    void checkMagic(int32_t magic, uint64_t offset, const FilePlace& place) const
+    {
         if (magic == TRR_MAGIC)
             return;
         if (offset == 0)
@@ -193,13 +190,11 @@ private:
                                std::to_string(TRR_MAGIC) + " (the frame before ends here by its sizes)");
     }
 
-    void checkVersion(uint64_t offset, const FilePlace& place) const
+    /** The version string: its length with the terminating null, its length, its 12 bytes. */
+    void checkVersion(const unsigned char* head, uint64_t offset, const FilePlace& place) const
     {
-        const int32_t withNull = readInt(offset + 4, place, "the version's length");
-        const int32_t length = readInt(offset + 8, place, "the version's length");
-        char text[12];
-        _file.read(offset + 12, text, 12, place, "the version");
-        if (withNull != 13 || length != 12 || std::string(text, 12) != VERSION)
+        if (big<int32_t>(head + 4) != 13 || big<int32_t>(head + 8) != 12 ||
+            std::string(reinterpret_cast<const char*>(head + 12), 12) != VERSION)
             place.fail(offset + 4, std::string("the version is not \"") + VERSION + "\"");
     }
 
@@ -274,9 +269,11 @@ private:
 
     void readBox(const TrrFrame& frame, const FilePlace& place, PointData& data) const
     {
+        unsigned char bytes[9 * 8];
+        _file.read(frame.blocks[Box], bytes, 9 * frame.real, place, "the box");
         double box[9];
-        for (int i = 0; i < 9; ++i)
-            box[i] = readReal(frame.blocks[Box] + uint64_t(i) * frame.real, frame.real, place, "the box");
+        for (std::size_t i = 0; i < 9; ++i)
+            box[i] = frame.real == 8 ? big<double>(bytes + 8 * i) : big<float>(bytes + 4 * i);
         setCellVectors(data, osg::Vec3d(box[0], box[1], box[2]), osg::Vec3d(box[3], box[4], box[5]),
                        osg::Vec3d(box[6], box[7], box[8]));
     }

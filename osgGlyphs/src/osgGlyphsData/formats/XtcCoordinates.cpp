@@ -15,6 +15,7 @@
 
 #include "XtcCoordinates.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace osgGlyphsData;
@@ -57,6 +58,61 @@ public:
     /** The next bits (1 to 32) as a number, the first bit most significant; false past the end. */
     bool read(int bits, uint32_t& value)
     {
+        if (_held < bits && !refill(bits))
+            return false;
+        _held -= bits;
+        value = static_cast<uint32_t>((_buffer >> _held) & ((uint64_t(1) << bits) - 1));
+        return true;
+    }
+
+    /** A number sent in groups of 8 bits, the least significant group first, and the bits left
+     * over (1 to 8) last, as the most significant. */
+    template <typename Number>
+    bool readPacked(int bits, Number& value)
+    {
+        value = 0;
+        int shift = 0;
+        uint32_t part;
+        while (bits > 8)
+        {
+            // Up to 4 whole groups at once, their order turned round.
+            const int groups = std::min((bits - 1) / 8, 4);
+            if (!read(8 * groups, part))
+                return false;
+            value |= static_cast<Number>(reverseBytes(part) >> (32 - 8 * groups)) << shift;
+            shift += 8 * groups;
+            bits -= 8 * groups;
+        }
+        if (!read(bits, part))
+            return false;
+        value |= static_cast<Number>(part) << shift;
+        return true;
+    }
+
+    /** The bytes that the bits read so far reach into. */
+    std::size_t byte() const { return _next - std::size_t(_held) / 8; }
+    std::size_t size() const { return _size; }
+    /** The byte that holds the next bit. */
+    std::size_t nextBitByte() const { return _next - std::size_t(_held + 7) / 8; }
+
+private:
+    static uint32_t reverseBytes(uint32_t value)
+    {
+        return (value >> 24) | ((value >> 8) & 0xff00) | ((value << 8) & 0xff0000) | (value << 24);
+    }
+
+    /** Adds bytes to the bits held until they are at least bits (at most 32); false at the end. */
+    bool refill(int bits)
+    {
+        if (_size - _next >= 4)
+        {
+            const unsigned char* at = _data + _next;
+            _buffer = (_buffer << 32) | (uint64_t(at[0]) << 24) | (uint64_t(at[1]) << 16) |
+                      (uint64_t(at[2]) << 8) | uint64_t(at[3]);
+            _next += 4;
+            _held += 32;
+            return true;
+        }
         while (_held < bits)
         {
             if (_next == _size)
@@ -64,32 +120,9 @@ public:
             _buffer = (_buffer << 8) | _data[_next++];
             _held += 8;
         }
-        _held -= bits;
-        value = static_cast<uint32_t>((_buffer >> _held) & ((uint64_t(1) << bits) - 1));
         return true;
     }
 
-    /** A number packed in groups of 8 bits, the least significant group first. */
-    template <typename Number>
-    bool readPacked(int bits, Number& value)
-    {
-        value = 0;
-        for (int shift = 0; bits > 0; shift += 8, bits -= 8)
-        {
-            uint32_t group;
-            if (!read(bits < 8 ? bits : 8, group))
-                return false;
-            value |= static_cast<Number>(group) << shift;
-        }
-        return true;
-    }
-
-    /** The bytes read so far. */
-    std::size_t byte() const { return _next; }
-    /** The byte that holds the next bit. */
-    std::size_t nextBitByte() const { return _next - std::size_t(_held + 7) / 8; }
-
-private:
     const unsigned char* _data;
     std::size_t _size;
     std::size_t _next = 0;
@@ -155,7 +188,7 @@ private:
     {
         if (!read)
             throw Failure{"the compressed coordinates end before atom " + std::to_string(atom + 1),
-                          _stream.byte()};
+                          _stream.size()};
     }
 
     void store(float* const out[3], std::size_t atom, const int64_t position[3]) const

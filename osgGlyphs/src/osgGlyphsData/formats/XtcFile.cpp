@@ -13,6 +13,7 @@
 #include "Formats.h"
 #include "XtcCoordinates.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace osgGlyphsData;
@@ -30,6 +31,8 @@ const uint64_t HEADER_BYTES = 56;
 const uint64_t COMPRESSED_HEADER_BYTES = 32;
 /** Up to this many atoms are stored as floats. */
 const uint32_t UNCOMPRESSED_ATOMS = 9;
+/** The most compressed bytes a thread keeps for its next frame. */
+const std::size_t KEPT_BYTES = std::size_t(64) << 20;
 
 struct XtcFrame
 {
@@ -114,47 +117,52 @@ private:
         return _file.readValue<int32_t>(at, true, place, what);
     }
 
-    /** Reads the frame's header at offset and finds where the frame ends; false when the file ends
-     * inside the frame. Throws when the header is not an XTC frame's or its counts do not agree. */
+    /** Reads the frame's header at offset (in one read) and finds where the frame ends; false
+     * when the file ends inside the frame. Throws when the header is not an XTC frame's or its
+     * counts do not agree. */
     bool readExtent(uint64_t offset, const FilePlace& place, XtcFrame& frame) const
     {
-        if (!_file.holds(offset, HEADER_BYTES))
-        {
-            checkMagic(offset, place, _file.holds(offset, 4));
+        unsigned char head[HEADER_BYTES + COMPRESSED_HEADER_BYTES + 8];
+        const uint64_t held = std::min<uint64_t>(sizeof(head), _file.getSize() - offset);
+        _file.read(offset, head, std::size_t(held), place, "the frame's header");
+        if (held < 4 && offset == 0)
+            place.fail(0, "not an XTC file: it is shorter than a frame's header");
+        if (held < 4)
             return false;
-        }
-        frame.wideCount = checkMagic(offset, place, true);
+        frame.wideCount = checkMagic(big<int32_t>(head), offset, place);
+        if (held < HEADER_BYTES)
+            return false;
         frame.offset = offset;
-        frame.atoms = readAtoms(offset, place);
-        frame.step = readInt(offset + 8, place, "the step");
-        frame.time = _file.readValue<float>(offset + 12, true, place, "the time");
-        uint64_t at = offset + HEADER_BYTES;
-        if (frame.atoms <= UNCOMPRESSED_ATOMS)
-            at += 12 * uint64_t(frame.atoms);
-        else
+        frame.atoms = checkAtoms(big<int32_t>(head + 4), big<int32_t>(head + 52), offset, place);
+        frame.step = big<int32_t>(head + 8);
+        frame.time = big<float>(head + 12);
+        uint64_t end = offset + HEADER_BYTES + 12 * uint64_t(frame.atoms);
+        if (frame.atoms > UNCOMPRESSED_ATOMS)
         {
-            const uint64_t countAt = at + COMPRESSED_HEADER_BYTES;
-            if (!_file.holds(countAt, frame.wideCount ? 8 : 4))
+            const uint64_t countAt = HEADER_BYTES + COMPRESSED_HEADER_BYTES;
+            const uint64_t countBytes = frame.wideCount ? 8 : 4;
+            if (held < countAt + countBytes)
                 return false;
-            const uint64_t count = readByteCount(countAt, frame, place);
-            at = countAt + (frame.wideCount ? 8 : 4) + (count + 3) / 4 * 4;
+            const int64_t count =
+                frame.wideCount ? big<int64_t>(head + countAt) : big<int32_t>(head + countAt);
+            end = offset + countAt + countBytes +
+                  (checkByteCount(count, frame, offset + countAt, place) + 3) / 4 * 4;
         }
-        if (at > _file.getSize())
+        if (end > _file.getSize())
             return false;
-        frame.end = at;
+        frame.end = end;
         return true;
     }
 
-    /** Whether the frame's byte count takes 8 bytes (magic 2023). */
-    bool checkMagic(uint64_t offset, const FilePlace& place, bool present) const
+    template <typename T>
+    static T big(const unsigned char* at)
     {
-        if (!present)
-        {
-            if (offset == 0)
-                place.fail(0, "not an XTC file: it is shorter than a frame's header");
-            return false;
-        }
-        const int32_t magic = readInt(offset, place, "the magic number");
+        return readers::loadScalar<T>(reinterpret_cast<const char*>(at), true);
+    }
+
+    /** Whether the frame's byte count takes 8 bytes (magic 2023). */
+    bool checkMagic(int32_t magic, uint64_t offset, const FilePlace& place) const
+    {
         if (magic == XTC_MAGIC || magic == XTC_MAGIC_WIDE)
             return magic == XTC_MAGIC_WIDE;
         if (offset == 0)
@@ -164,25 +172,19 @@ private:
                                std::to_string(XTC_MAGIC) + " (the frame before ends here by its byte count)");
     }
 
-    uint32_t readAtoms(uint64_t offset, const FilePlace& place) const
+    /** The frame's atom count, which the header gives and the coordinates repeat. */
+    uint32_t checkAtoms(int32_t atoms, int32_t again, uint64_t offset, const FilePlace& place) const
     {
-        const int32_t atoms = readInt(offset + 4, place, "the atom count");
         if (atoms < 0)
             place.fail(offset + 4, "the atom count is " + std::to_string(atoms));
-        const int32_t again = readInt(offset + 52, place, "the atom count");
         if (again != atoms)
             place.fail(offset + 52, "the atom count before the coordinates is " + std::to_string(again) +
                                         ", the frame's header says " + std::to_string(atoms));
         return static_cast<uint32_t>(atoms);
     }
 
-    uint64_t readByteCount(uint64_t at, const XtcFrame& frame, const FilePlace& place) const
+    uint64_t checkByteCount(int64_t count, const XtcFrame& frame, uint64_t at, const FilePlace& place) const
     {
-        int64_t count = 0;
-        if (frame.wideCount)
-            count = _file.readValue<int64_t>(at, true, place, "the byte count");
-        else
-            count = readInt(at, place, "the byte count");
         // Each atom takes at least 2 bits (its integers when they cannot differ, and the run flag).
         if (count < 0 || uint64_t(count) > maxXtcCompressedBytes(frame.atoms) ||
             uint64_t(count) < frame.atoms / 4)
@@ -260,14 +262,22 @@ private:
         if (!wrong.empty())
             place.fail(at, wrong);
         const uint64_t countAt = at + COMPRESSED_HEADER_BYTES;
-        const uint64_t count = readByteCount(countAt, frame, place);
+        const int64_t stored = frame.wideCount
+                                   ? _file.readValue<int64_t>(countAt, true, place, "the byte count")
+                                   : readInt(countAt, place, "the byte count");
+        const uint64_t count = checkByteCount(stored, frame, countAt, place);
         const uint64_t bytesAt = countAt + (frame.wideCount ? 8 : 4);
-        std::vector<unsigned char> bytes(static_cast<std::size_t>(count));
+        // Each thread keeps the buffer from frame to frame (fresh memory costs about as much as
+        // decoding), up to KEPT_BYTES.
+        thread_local std::vector<unsigned char> bytes;
+        bytes.resize(static_cast<std::size_t>(count));
         _file.read(bytesAt, bytes.data(), bytes.size(), place, "the compressed coordinates");
         float* const out[3] = {columns[0].data(), columns[1].data(), columns[2].data()};
         std::size_t byte = 0;
         const std::string error =
             decodeXtcCoordinates(header, bytes.data(), bytes.size(), frame.atoms, out, byte);
+        if (bytes.capacity() > KEPT_BYTES)
+            std::vector<unsigned char>().swap(bytes);
         if (!error.empty())
             place.fail(bytesAt + byte, error);
     }
