@@ -72,6 +72,8 @@ struct ConvertOptions
     std::string format;
     /** --dataset (repeatable): the HDF5 datasets to read, the positions first. */
     std::vector<std::string> datasets;
+    /** --topology: the atoms' names, types and elements of a trajectory of coordinates. */
+    std::string topology;
     unsigned int frame = 0;
     /** The frames converted: --frame's alone, or --frame-range's, each into an archive named by
      * output as a pattern (formatFramePath()). */
@@ -106,6 +108,12 @@ void describeOptions(osg::ApplicationUsage& usage)
                        "through an index of the file's frames, kept beside it (<input>.glyphindex) for "
                        "the next run.");
     usage.addCommandLineOption("--format <name>", "Read the input as this format whatever its extension.");
+    usage.addCommandLineOption(
+        "--topology <file>",
+        "The atoms of an input that holds only coordinates (DCD, XTC, TRR): a PDB, GRO or LAMMPS data file "
+        "(write_data, its atoms sorted by id), or any point file, whose first frame gives every frame the "
+        "columns it lacks (id, name, residue, type, species, element, mass, charge, ...), atom by atom in "
+        "file order. Its atom count must be the input's. The input is then read as by --frame-range.");
     usage.addCommandLineOption(
         "--dataset <path>", "Of an HDF5 input, a dataset to read (repeatable): the positions first (N x 3), "
                             "then columns (N or N x k). Without it, H5MD and snapshots are read whole.");
@@ -199,6 +207,7 @@ bool readOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::s
     if (!osgGlyphsData::readGlyphMappingArguments(arguments, options.mapping, error))
         return false;
     arguments.read("--format", options.format);
+    arguments.read("--topology", options.topology);
     for (std::string dataset; arguments.read("--dataset", dataset);)
         options.datasets.push_back(dataset);
     if (!readFrameOptions(arguments, options, error))
@@ -293,6 +302,11 @@ bool readOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::s
     if (osgDB::getLowerCaseFileExtension(options.output) != "osga")
     {
         error = options.output + ": the output is an OSG archive, named *.osga";
+        return false;
+    }
+    if (!options.topology.empty() && options.randomCount)
+    {
+        error = "--topology needs a file of frames, not --random";
         return false;
     }
     if (options.hasFrameRange && options.randomCount)
@@ -615,6 +629,7 @@ bool openTrajectory(const ConvertOptions& options, ConvertProgress& progress, Tr
     osgGlyphsData::FrameSourceOptions sourceOptions;
     sourceOptions.format = options.format;
     sourceOptions.datasets = options.datasets;
+    sourceOptions.topology = options.topology;
     sourceOptions.warning = printWarning;
     sourceOptions.progress = [&progress](uint64_t done, uint64_t total)
     { progress.update(total ? double(done) / total : 0.0); };
@@ -656,7 +671,7 @@ osg::ref_ptr<osgGlyphsTiles::TileBuilder> build(const ConvertOptions& options, C
 {
     if (options.randomCount)
         return buildRandom(options, progress, error);
-    if (isCompressed(options.input))
+    if (isCompressed(options.input) || !options.topology.empty())
         return buildFromSource(options, progress, error);
     return buildFromFile(options, progress, error);
 }

@@ -25,6 +25,8 @@ bool checkDistributable(const ViewerOptions& options, std::string& error)
         error = "tile archives are not split under mpirun: give the point file";
     else if (options.follow)
         error = "--follow is not available under mpirun";
+    else if (!options.topology.empty())
+        error = "--topology is not available under mpirun";
     else if (options.shadows)
         error = "--shadows is not available under mpirun (the shadow map would see one share)";
     else if (options.hasPick)

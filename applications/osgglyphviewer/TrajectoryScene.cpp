@@ -73,6 +73,7 @@ osg::ref_ptr<ViewerScene> createTrajectoryScene(const ViewerOptions& options, st
     osgGlyphsData::FrameSourceOptions sourceOptions;
     sourceOptions.format = options.format;
     sourceOptions.datasets = options.datasets;
+    sourceOptions.topology = options.topology;
     sourceOptions.growing = options.follow;
     sourceOptions.progress = [&progress](uint64_t bytesRead, uint64_t totalBytes)
     { progress.update(bytesRead, totalBytes); };

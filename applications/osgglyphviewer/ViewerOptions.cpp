@@ -73,6 +73,7 @@ bool readMappingOptions(osg::ArgumentParser& arguments, ViewerOptions& options, 
 bool readInputOptions(osg::ArgumentParser& arguments, ViewerOptions& options, std::string& error)
 {
     arguments.read("--format", options.format);
+    arguments.read("--topology", options.topology);
     for (std::string dataset; arguments.read("--dataset", dataset);)
         options.datasets.push_back(dataset);
     int value = 0;
@@ -239,6 +240,12 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--format <name>",
                                "Read the file as this format (" + formats + ") whatever its extension.");
     usage.addCommandLineOption(
+        "--topology <file>",
+        "The atoms of a trajectory that holds only coordinates (DCD, XTC, TRR): a PDB, GRO or LAMMPS data "
+        "file (write_data, its atoms sorted by id), or any point file, whose first frame gives every frame "
+        "the columns it lacks (id, name, residue, type, species, element, mass, charge, ...), atom by atom "
+        "in file order. Its atom count must be the trajectory's.");
+    usage.addCommandLineOption(
         "--dataset <path>", "Of an HDF5 file, a dataset to read (repeatable): the positions first (N x 3), "
                             "then columns (N or N x k). Without it, H5MD and snapshots are read whole.");
     usage.addCommandLineOption("--frame <n>", "The frame of a multi-frame file to show, counted from 0 "
@@ -335,6 +342,11 @@ bool readViewerOptions(osg::ArgumentParser& arguments, ViewerOptions& options, s
     if (!options.file.empty() && options.randomCount > 0)
     {
         error = "give a file or --random, not both";
+        return false;
+    }
+    if (!options.topology.empty() && options.file.empty())
+    {
+        error = "--topology needs a file of frames";
         return false;
     }
     if (options.follow && options.file.empty())

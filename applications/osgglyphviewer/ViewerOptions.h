@@ -40,6 +40,7 @@ struct ViewerOptions
     std::string file;
     std::string format;
     std::vector<std::string> datasets; // --dataset PATH (repeatable): HDF5 datasets, positions first
+    std::string topology;              // --topology FILE: the atoms' names, types, elements of a trajectory
     unsigned int frame = 0;
     unsigned int randomCount = 0; // --random N; 0: no random dataset
     unsigned int seed = 1;

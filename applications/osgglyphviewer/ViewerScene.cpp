@@ -326,6 +326,11 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
                 (options.randomCount ? "random" : "built-in") + " scene has one frame (0)";
         return nullptr;
     }
+    if (!options.topology.empty() && isTileArchive(options.file))
+    {
+        error = "--topology: " + options.file + " is a tile archive, whose glyphs are made already";
+        return nullptr;
+    }
     osg::ref_ptr<ViewerScene> scene;
     if (!options.file.empty() && isTileArchive(options.file))
         scene = createTileScene(options, error);
