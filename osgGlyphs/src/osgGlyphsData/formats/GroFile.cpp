@@ -94,7 +94,7 @@ struct AtomColumns
         elements.reserve(count);
     }
 
-    void append(const TextLines& lines, std::string_view line, uint64_t atom)
+    void append(const TextLines& lines, std::string_view line)
     {
         const std::size_t fields = layout.velocities ? 6 : 3;
         if (line.size() < layout.start(fields))
@@ -116,9 +116,6 @@ struct AtomColumns
             const std::size_t first = layout.start(i) + 1;
             const std::size_t last = first + layout.width - 1;
             const double value = parseFixedNumber(lines, columns(line, first, last), first, last, what[i]);
-            if (std::abs(value) > 1e30)
-                lines.fail(std::string(what[i]) + " of atom " + std::to_string(atom + 1) +
-                           " is out of the range of a float");
             numbers[i].push_back(static_cast<float>(value));
         }
         elements.append(guessElement(std::string_view(), name, false, residue), name);
@@ -275,10 +272,10 @@ private:
         }
         AtomColumns atoms(layout, static_cast<std::size_t>(range.end - range.begin));
         if (range.begin == 0 && range.end > 0)
-            atoms.append(lines, first, 0);
+            atoms.append(lines, first);
         atom += lines.skip(range.begin > atom ? range.begin - atom : 0);
         for (; atom < range.end && lines.next(line); ++atom)
-            atoms.append(lines, line, atom);
+            atoms.append(lines, line);
         atom += lines.skip(info.points - atom);
         if (atom != info.points || !lines.next(line))
             lines.fail("the frame ends before its " + std::to_string(info.points) +

@@ -92,7 +92,7 @@ struct AtomColumns
         elements.reserve(count);
     }
 
-    void append(const TextLines& lines, std::string_view line, uint64_t atom)
+    void append(const TextLines& lines, std::string_view line)
     {
         if (line.size() < 54)
             lines.fail("an atom record of " + std::to_string(line.size()) +
@@ -111,9 +111,6 @@ struct AtomColumns
             const std::size_t first = 31 + 8 * axis;
             const double value =
                 parseFixedNumber(lines, columns(line, first, first + 7), first, first + 7, axes[axis]);
-            if (std::abs(value) > 1e30)
-                lines.fail(std::string(axes[axis]) + " of atom " + std::to_string(atom + 1) +
-                           " is out of the range of a float");
             targets[axis]->push_back(static_cast<float>(value));
         }
         occupancy.push_back(optionalNumber(lines, line, 55, 60, "occupancy", 1.0));
@@ -323,7 +320,7 @@ private:
             if (isAtom(record))
             {
                 if (atom >= range.begin && atom < range.end)
-                    atoms.append(lines, line, atom);
+                    atoms.append(lines, line);
                 ++atom;
             }
             else if (record == "CRYST1")

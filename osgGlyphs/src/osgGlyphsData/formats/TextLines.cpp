@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 using namespace osgGlyphsData;
 using namespace osgGlyphsData::formats;
@@ -188,6 +189,8 @@ double formats::parseFixedNumber(const TextLines& lines, std::string_view field,
                                                              : quote(field) + " is not a number"));
     if (!std::isfinite(value))
         lines.fail(describeColumns(first, last, what) + quote(field) + " is not a finite number");
+    if (std::abs(value) > std::numeric_limits<float>::max())
+        lines.fail(describeColumns(first, last, what) + quote(field) + " is out of the range of a float");
     return value;
 }
 

@@ -85,7 +85,8 @@ private:
 std::string_view columns(std::string_view line, std::size_t first, std::size_t last);
 
 /** The value of a number field (blanks around it allowed); fails at the line with "columns a-b
- * (<what>): '<field>' is not a number" (or "... is not a finite number"). */
+ * (<what>): '<field>' is not a number" (or "... is not a finite number", "... is out of the range of
+ * a float"). */
 double parseFixedNumber(const TextLines& lines, std::string_view field, std::size_t first, std::size_t last,
                         const char* what);
 

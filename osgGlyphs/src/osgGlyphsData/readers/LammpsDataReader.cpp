@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <unordered_map>
@@ -156,6 +157,8 @@ private:
         double value = 0.0;
         if (!parseDouble(field, value) || !std::isfinite(value))
             _scanner.fail(what + ": " + quote(field) + " is not a finite number");
+        if (std::abs(value) > std::numeric_limits<float>::max())
+            _scanner.fail(what + ": " + quote(field) + " is out of the range of a float");
         return value;
     }
 
