@@ -59,3 +59,13 @@ TEST(AlphaColumn, WithoutItTheGlyphsAreOpaque)
     ASSERT_NE(cloud->getColors(), nullptr);
     EXPECT_EQ((*cloud->getColors())[0], osg::Vec4ub(255, 0, 0, 255));
 }
+
+TEST(AlphaColumn, SixteenBitColoursAsLasStoresThem)
+{
+    const osg::ref_ptr<osgGlyphs::GlyphCloud> cloud =
+        mapCsv("x,y,z,red,green,blue\n0,0,0,65535,32896,0\n1,0,0,256,0,65535\n");
+    ASSERT_TRUE(cloud.valid());
+    ASSERT_NE(cloud->getColors(), nullptr);
+    EXPECT_EQ((*cloud->getColors())[0], osg::Vec4ub(255, 128, 0, 255));
+    EXPECT_EQ((*cloud->getColors())[1], osg::Vec4ub(1, 0, 255, 255));
+}

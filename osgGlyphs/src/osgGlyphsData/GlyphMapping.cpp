@@ -207,7 +207,8 @@ bool GlyphMapper::resolveColor(const PointData& data, std::string& error)
         for (const ColumnValues& column : rgb)
             for (float value : *column)
                 largest = std::isfinite(value) ? std::max(largest, value) : largest;
-        _rgbScale = largest > 1.0f ? 1.0f / 255.0f : 1.0f;
+        // 0..1, 8 bits (PLY, CSV) or 16 bits (LAS), by the largest value.
+        _rgbScale = largest > 255.0f ? 1.0f / 65535.0f : largest > 1.0f ? 1.0f / 255.0f : 1.0f;
     }
     else if (!_vectorColumns.empty())
         _colorSource = ColorSource::Speed;
