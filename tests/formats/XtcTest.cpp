@@ -372,6 +372,7 @@ TEST(Xtc, FilesThatLieFailNamingTheFileFrameAndByte)
         {"not xtc", std::string(200, 'x'), "not an XTC file"},
         {"magic", with(two, 1996), at2 + std::to_string(two) + ": the magic number is 1996"},
         {"atoms", with(one + 4, 499), at1 + std::to_string(one + 52) + ": the atom count before"},
+        // The run of small differences that would pass atom 499 starts at byte 3897.
         {"both atom counts fewer", withBoth(one, 499),
          at1 + "3897: atom 494: a run of 6 atoms goes past the frame's 499"},
         {"both atom counts more", withBoth(one, 501),
@@ -453,7 +454,6 @@ TEST(Trr, FramesWithoutPositionsAreLeftOutWithAWarning)
 {
     // Frame 0 as if written with velocities and forces only: its x block taken out.
     const std::string good = readBytes(xtcPath("melt.trr"));
-    const std::vector<std::size_t> frames = trrFrames(good, 4);
     const std::size_t x = 84 + 36;
     std::string bytes = good.substr(0, x) + good.substr(x + 6000);
     writeWord(bytes, 52, 0);
@@ -472,7 +472,6 @@ TEST(Trr, FramesWithoutPositionsAreLeftOutWithAWarning)
     osg::ref_ptr<PointData> dump = frameOf(*melt(), 1);
     ASSERT_TRUE(first && dump);
     expectAtomsMatch(*dump, *first, {"x"}, {"x"}, NM, 1e-6);
-    ASSERT_GE(frames.size(), 2u);
 }
 
 TEST(Trr, FilesThatLieFailNamingTheFileFrameAndByte)

@@ -70,9 +70,20 @@ public:
     template <typename Number>
     bool readPacked(int bits, Number& value)
     {
+        uint32_t part;
+        if (bits <= 32)
+        {
+            // All at once: the whole groups, their order turned round, then the rest.
+            if (!read(bits, part))
+                return false;
+            const int groups = (bits - 1) / 8;
+            const int rest = bits - 8 * groups;
+            const uint32_t whole = groups > 0 ? reverseBytes(part >> rest) >> (32 - 8 * groups) : 0;
+            value = static_cast<Number>(whole | ((part & ((1u << rest) - 1)) << (8 * groups)));
+            return true;
+        }
         value = 0;
         int shift = 0;
-        uint32_t part;
         while (bits > 8)
         {
             // Up to 4 whole groups at once, their order turned round.
@@ -221,6 +232,23 @@ private:
             unpackAs<Wide>(bits, range, atom, values);
     }
 
+    /** Three integers packed in at most 32 bits, below size^3: as unpack(), dividing by size with
+     * a multiplication by inverse = ceil(2^64 / size) (Lemire, Kaser and Kurz, "Faster remainder
+     * by direct computation", 2019: exact for 32-bit numbers and divisors). */
+    void unpackSmall(std::size_t atom, uint32_t size, uint64_t inverse, int64_t values[3])
+    {
+        uint32_t packed;
+        need(_stream.readPacked(_smallIndex, packed), atom);
+        for (int axis = 2; axis > 0; --axis)
+        {
+            values[axis] = static_cast<int64_t>((Wide(inverse * packed) * size) >> 64);
+            packed = static_cast<uint32_t>((Wide(inverse) * packed) >> 64);
+        }
+        if (packed >= size)
+            throw Failure{"atom " + std::to_string(atom + 1) + " lies beyond the frame's range", _atomByte};
+        values[0] = packed;
+    }
+
     void readFull(std::size_t atom, int64_t position[3])
     {
         if (_packedBits == 0)
@@ -257,11 +285,15 @@ private:
                           _atomByte};
         const int64_t size = SIZES[_smallIndex];
         const int64_t ranges[3] = {size, size, size};
+        const uint64_t inverse = UINT64_MAX / uint64_t(size) + 1;
         int64_t previous[3] = {full[0], full[1], full[2]};
         for (int64_t i = 0; i < count; ++i)
         {
             int64_t position[3];
-            unpack(_smallIndex, ranges, atom, position);
+            if (_smallIndex <= 32)
+                unpackSmall(atom, uint32_t(size), inverse, position);
+            else
+                unpack(_smallIndex, ranges, atom, position);
             for (int axis = 0; axis < 3; ++axis)
                 position[axis] += previous[axis] - size / 2;
             store(out, atom++, position);
