@@ -10,7 +10,8 @@ namespace
 /** How many times the bytes HDF5 stores for a dataset its values may be: more than any of HDF5's
  * compression filters reaches (deflate stops near 1032). */
 constexpr hsize_t MostExpansion = 4096;
-constexpr hsize_t ValuesPerBlock = hsize_t(1) << 20;
+/** Values read at once: a buffer that stays in the cache while it is spread into columns. */
+constexpr hsize_t ValuesPerBlock = hsize_t(1) << 17;
 
 bool multiply(hsize_t a, hsize_t b, hsize_t& product)
 {
@@ -67,7 +68,9 @@ void readBlocks(const DatasetInfo& info, const std::vector<hsize_t>& leading, hs
     if (width == 0 || begin == end)
         return;
     const hsize_t rowsPerBlock = std::max<hsize_t>(1, ValuesPerBlock / width);
-    std::vector<T> buffer(static_cast<std::size_t>(std::min(end - begin, rowsPerBlock) * width));
+    // Reused by the thread's next reads: no allocation, no first touch of its pages each time.
+    thread_local std::vector<T> buffer;
+    buffer.resize(std::max<std::size_t>(buffer.size(), std::min(end - begin, rowsPerBlock) * width));
     Handle fileSpace(H5Dget_space(info.dataset.get()), H5Sclose);
     std::vector<hsize_t> start(info.dims.size(), 0), count(info.dims);
     for (std::size_t i = 0; i < axis; ++i)
@@ -168,7 +171,7 @@ DatasetInfo osgGlyphsHdf5::detail::describeDataset(hid_t file, const std::string
             place.fail(path, "has dims " + describeDims(info.dims) + " whose product overflows");
     }
     const hsize_t stored = H5Dget_storage_size(info.dataset.get());
-    if (bytes > stored * MostExpansion + ValuesPerBlock)
+    if (bytes > stored * MostExpansion + (hsize_t(1) << 20))
         place.fail(path, "has dims " + describeDims(info.dims) + " (" + std::to_string(bytes) +
                              " bytes) but the file stores " + std::to_string(stored) +
                              " bytes of it: dims that its data cannot fill");

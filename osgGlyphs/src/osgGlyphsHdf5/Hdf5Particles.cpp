@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -124,31 +126,81 @@ void chooseOrigins(const Element& element, const std::vector<hsize_t>& leading, 
                "the position of particle " + std::to_string(row) + " is not a finite number");
 }
 
+/** Whether a value is a finite number: a comparison that also fails for NaN. */
+template <typename T>
+bool isFinite(T value)
+{
+    return std::fabs(value) <= std::numeric_limits<T>::max();
+}
+
+/** Whether every value is finite: no value has the exponent bits all set (infinity, NaN), tested
+ * on the bits so that the loop vectorises. */
+template <typename T>
+bool allFinite(const T* values, std::size_t count)
+{
+    using Bits = std::conditional_t<sizeof(T) == 4, uint32_t, uint64_t>;
+    const Bits exponent = sizeof(T) == 4 ? Bits(0x7f800000u) : Bits(0x7ff0000000000000ull);
+    unsigned int bad = 0;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        Bits bits;
+        std::memcpy(&bits, values + i, sizeof(bits));
+        bad |= (bits & exponent) == exponent;
+    }
+    return bad == 0;
+}
+
+/** Spreads rows of width values into the columns at targets, less the columns' origins. */
+template <typename T>
+void spreadRows(const T* values, std::size_t rows, const std::vector<OutColumn*>& targets, std::size_t at)
+{
+    const std::size_t width = targets.size();
+    bool offsets = false;
+    for (const OutColumn* target : targets)
+        offsets = offsets || target->origin != 0.0;
+    if (width == 3 && !offsets)
+    {
+        float* x = targets[0]->values.data() + at;
+        float* y = targets[1]->values.data() + at;
+        float* z = targets[2]->values.data() + at;
+        for (std::size_t r = 0; r < rows; ++r)
+        {
+            x[r] = static_cast<float>(values[3 * r]);
+            y[r] = static_cast<float>(values[3 * r + 1]);
+            z[r] = static_cast<float>(values[3 * r + 2]);
+        }
+        return;
+    }
+    for (std::size_t c = 0; c < width; ++c)
+    {
+        float* target = targets[c]->values.data() + at;
+        const T origin = static_cast<T>(targets[c]->origin);
+        for (std::size_t r = 0; r < rows; ++r)
+            target[r] = static_cast<float>(values[r * width + c] - origin);
+    }
+}
+
 /** Copies rows into the element's columns at out (the frame's row of the segment's first). */
 template <typename T>
 void copyRows(const Element& element, const std::vector<hsize_t>& leading, hsize_t begin, hsize_t end,
               std::size_t out, OutColumns& columns, const Place& place)
 {
-    const std::size_t width = element.columns.size();
     std::vector<OutColumn*> targets;
     for (const std::string& name : element.columns)
         targets.push_back(&columns[name]);
     const bool positions = element.kind == ElementKind::Position;
     RowSink<T> sink = [&](hsize_t row, const T* values, hsize_t rows)
     {
-        const std::size_t at = out + static_cast<std::size_t>(row - begin);
-        for (std::size_t c = 0; c < width; ++c)
+        const std::size_t count = static_cast<std::size_t>(rows) * targets.size();
+        if (positions && !allFinite(values, count))
         {
-            float* target = targets[c]->values.data() + at;
-            const T origin = static_cast<T>(targets[c]->origin);
-            for (std::size_t r = 0; r < rows; ++r)
-            {
-                const T value = values[r * width + c];
-                if (positions && !std::isfinite(value))
-                    failNotFinite(element, row + r, place);
-                target[r] = static_cast<float>(value - origin);
-            }
+            std::size_t bad = 0;
+            while (isFinite(values[bad]))
+                ++bad;
+            failNotFinite(element, row + bad / targets.size(), place);
         }
+        spreadRows(values, static_cast<std::size_t>(rows), targets,
+                   out + static_cast<std::size_t>(row - begin));
     };
     readRows(element.value, leading, begin, end, place, sink);
 }
