@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -37,6 +38,15 @@ void check(bool condition)
 {
     if (!condition)
         std::abort();
+}
+
+/** Aborts, printing it, on a message that is not one line naming the input. */
+void checkMessage(const std::string& message)
+{
+    if (isOneLineAboutTheInput(message))
+        return;
+    std::fprintf(stderr, "not one line naming the input: [%s]\n", message.c_str());
+    std::abort();
 }
 
 void checkColumns(const osgGlyphsData::PointData& frame)
@@ -69,12 +79,12 @@ osg::ref_ptr<osgGlyphsData::FrameSource> open(const osgGlyphsData::PointShare& s
     options.format = OSGGLYPHS_FUZZ_FORMAT;
     options.indexLocation = osgGlyphsData::FrameIndexLocation::None;
     options.share = share;
-    options.warning = [](const std::string& warning) { check(isOneLineAboutTheInput(warning)); };
+    options.warning = [](const std::string& warning) { checkMessage(warning); };
     std::string error;
     osg::ref_ptr<osgGlyphsData::FrameSource> source =
         osgGlyphsData::FrameSource::open(inputPath(), options, error);
     if (!source)
-        check(isOneLineAboutTheInput(error));
+        checkMessage(error);
     return source;
 }
 
@@ -94,7 +104,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, std::size_t size)
         std::string error;
         decoded[frame] = source->readFrame(frame, error);
         if (!decoded[frame])
-            check(isOneLineAboutTheInput(error));
+            checkMessage(error);
         else
             checkColumns(*decoded[frame]);
     }

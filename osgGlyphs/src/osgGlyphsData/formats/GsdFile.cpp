@@ -16,6 +16,7 @@
 // groups, state/ and log/ are not read. A frame that omits a chunk takes frame 0's (for a
 // per-particle chunk, only when frame 0 has as many particles), else the schema's default.
 
+#include "../readers/Fields.h"
 #include "BinaryFile.h"
 #include "Formats.h"
 
@@ -124,9 +125,10 @@ const Quantity QUANTITIES[] = {
 const char* const OTHER_PARTICLE_CHUNKS[] = {"particles/N", "particles/types", "particles/typeid",
                                              "particles/type_shapes"};
 
+/** A name from the file for a message: its control and other bytes escaped. */
 std::string quoted(const std::string& name)
 {
-    return "'" + name + "'";
+    return readers::quote(name);
 }
 
 class GsdFile : public FrameFile
