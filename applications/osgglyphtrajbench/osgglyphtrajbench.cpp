@@ -20,6 +20,9 @@
 #include <osgGlyphsData/PointReader>
 #include <osgGlyphsData/TrajectoryPlayer>
 #include <osgGlyphsHeadless/OffscreenViewer>
+#ifdef OSGGLYPHS_HAVE_HDF5
+#include <osgGlyphsHdf5/Hdf5Formats>
+#endif
 
 #include <osg/ArgumentParser>
 #include <osg/Group>
@@ -756,6 +759,9 @@ std::string today()
 
 int main(int argc, char** argv)
 {
+#ifdef OSGGLYPHS_HAVE_HDF5
+    osgGlyphsHdf5::registerFormats(); // H5MD and snapshots
+#endif
     // A glyph program that fails is reported by draw(), in one line.
     osg::setNotifyHandler(new osgGlyphs::ProgramErrorFilter(osg::getNotifyHandler()));
     osg::ArgumentParser arguments(&argc, argv);
