@@ -92,6 +92,19 @@ TEST_F(GlyphDiagnosis, GlyphsInViewHaveNone)
     expectSeen(group({cloud.get()}).get(), 300);
 }
 
+// A cloud far from zero (LAS, UTM coordinates) keeps its positions relative to its origin.
+TEST_F(GlyphDiagnosis, GlyphsRelativeToAFarOriginInViewHaveNone)
+{
+    const osg::Vec3d origin(3000.0, -4000.0, -5000.0);
+    std::vector<osg::Vec3> relative;
+    for (const osg::Vec3& point : THREE_POINTS)
+        relative.push_back(osg::Vec3(osg::Vec3d(point) - origin));
+    osg::ref_ptr<GlyphCloud> cloud = createCloud(relative, 0.5f);
+    cloud->setOrigin(origin);
+    computeNearFar(1.0, 1000.0);
+    expectSeen(group({cloud.get()}).get(), 300);
+}
+
 TEST_F(GlyphDiagnosis, ConesOfZeroVectorsAreEverySkipped)
 {
     osg::ref_ptr<GlyphCloud> cloud = createCloud(THREE_POINTS, 0.5f);

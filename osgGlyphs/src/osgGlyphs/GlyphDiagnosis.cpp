@@ -217,7 +217,8 @@ Footprint measureFootprint(const std::vector<PlacedCloud>& clouds, const osg::Ma
         {
             if (getSkipReason(cloud, i) != DRAWN)
                 continue;
-            const double distance = -(osg::Vec3d((*cloud.getPositions())[i]) * toEye).z();
+            const double distance =
+                -((osg::Vec3d((*cloud.getPositions())[i]) + cloud.getOrigin()) * toEye).z();
             if (perspective && distance <= 0.0)
                 continue;
             const double perUnit = perspective ? scale / distance : scale;
