@@ -5,7 +5,11 @@
 
 #include "FormatTestData.h"
 
+#include <osgGlyphsData/Elements>
+#include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsData/PointReader>
+
+#include <osgGlyphs/GlyphCloud>
 
 #include <sstream>
 
@@ -365,6 +369,28 @@ TEST(Gro, MDAnalysisFramesAreTheDumpsFrames)
     EXPECT_EQ(late->getColumnNames(),
               (std::vector<std::string>{"id", "name", "residue", "residue_id", "x", "y", "z", "vx", "vy",
                                         "vz", "element", "species"}));
+}
+
+// Element radii are in Angstrom: GROMACS' nanometres take a tenth of them, PDB's Angstrom all.
+TEST(Gro, ElementRadiiAreInNanometres)
+{
+    for (const char* name : {"melt.gro", "melt.pdb"})
+    {
+        SCOPED_TRACE(name);
+        osg::ref_ptr<PointData> frame = frameOf(*openFrames(pdbData(name)), 0);
+        ASSERT_TRUE(frame && frame->hasColumn("element"));
+        osg::ref_ptr<PointDataset> dataset = new PointDataset;
+        dataset->addFrame(frame.get());
+        GlyphMapper mapper{GlyphMappingOptions()};
+        std::string error;
+        ASSERT_TRUE(mapper.prepare(*dataset, 0, error)) << error;
+        osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = mapper.createCloud(*frame, error);
+        ASSERT_TRUE(cloud && cloud->getRadii()) << error;
+        const float argon = getElement(18).covalentRadius;
+        const double unit = std::string(name) == "melt.gro" ? 10.0 : 1.0;
+        EXPECT_EQ(frame->getAngstromsPerUnit(), unit);
+        EXPECT_NEAR((*cloud->getRadii())[0], argon / unit, 1e-6);
+    }
 }
 
 TEST(Gro, ReadsOtherPrecisionsTriclinicBoxesAndGromacsTitles)

@@ -828,6 +828,7 @@ osg::ref_ptr<PointData> FrameInterpolator::interpolate(double t) const
     osg::ref_ptr<PointData> output = new PointData(numPoints);
     output->setSource(a.getSource());
     output->setTimestep(a.getTimestep());
+    output->setAngstromsPerUnit(a.getAngstromsPerUnit());
     if (matching.hasBox)
     {
         const Cell cell = Cell::blend(matching.cellA, matching.cellB, t);

@@ -336,14 +336,15 @@ void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec
     float typical = 1.0f;
     if (!_radiusColumn.empty() || _elementRadii)
     {
-        _radius = factor;
+        const double angstroms = data.getAngstromsPerUnit();
+        _radius = _elementRadii ? (angstroms > 0.0 ? float(1.0 / angstroms) : 1.0f) : factor;
         double sum = 0.0;
         std::size_t count = 0;
         ColumnValues column;
         column.assign(data, _elementRadii ? "element" : _radiusColumn);
         for (float value : *column)
         {
-            const float radius = _elementRadii ? elementOf(value).covalentRadius : value * _radius;
+            const float radius = (_elementRadii ? elementOf(value).covalentRadius : value) * _radius;
             if (std::isfinite(radius) && radius > 0.0f)
             {
                 sum += radius;
@@ -565,7 +566,7 @@ bool GlyphMapper::computeRadii(const PointData& data, osg::ref_ptr<osg::FloatArr
     }
     radii = new osg::FloatArray(data.getNumPoints());
     for (std::size_t i = 0; i < radii->size(); ++i)
-        (*radii)[i] = _elementRadii ? elementOf((*column)[i]).covalentRadius : (*column)[i] * _radius;
+        (*radii)[i] = (_elementRadii ? elementOf((*column)[i]).covalentRadius : (*column)[i]) * _radius;
     return true;
 }
 

@@ -125,6 +125,7 @@ struct AtomColumns
     {
         static const char* const columnNames[6] = {"x", "y", "z", "vx", "vy", "vz"};
         osg::ref_ptr<PointData> frame = new PointData(ids.size());
+        frame->setAngstromsPerUnit(10.0); // nm
         frame->addColumn("id", std::move(ids));
         names.addTo(*frame, "name");
         residues.addTo(*frame, "residue");

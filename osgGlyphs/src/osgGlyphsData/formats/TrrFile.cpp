@@ -251,6 +251,7 @@ private:
         const TrrFrame& found = _frames[frame];
         const FilePlace place{&_path, found.fileFrame};
         osg::ref_ptr<PointData> data = new PointData;
+        data->setAngstromsPerUnit(10.0); // nm
         if (found.blocks[Box] != 0)
             readBox(found, place, *data);
         const PointRange range = getShareRange(share, found.atoms);

@@ -201,6 +201,7 @@ private:
                        "no such frame (the file holds " + std::to_string(_frames.size()) + ")");
         const XtcFrame& found = _frames[frame];
         osg::ref_ptr<PointData> data = new PointData;
+        data->setAngstromsPerUnit(10.0); // nm
         float box[9];
         _file.readValues(found.offset + 16, box, 9, true, place, "the box");
         setGromacsBox(*data, box);
