@@ -26,6 +26,9 @@ TEST(PointReader, TellsFormatsFromExtensions)
     EXPECT_EQ(formatFromExtension("melt.dump"), "lammps");
     EXPECT_EQ(formatFromExtension("run.lammps"), "lammps");
     EXPECT_EQ(formatFromExtension("/tmp/dump.melt"), "lammps");
+    EXPECT_EQ(formatFromExtension("data.peptide"), "lammpsdata");
+    EXPECT_EQ(formatFromExtension("data.csv"), "csv");
+    EXPECT_EQ(formatFromExtension("dump.xyz"), "xyz");
     EXPECT_EQ(formatFromExtension("bunny.ply"), "ply");
     EXPECT_EQ(formatFromExtension("grid.vtk"), "vtk");
     EXPECT_EQ(formatFromExtension("notes.txt"), "");

@@ -101,7 +101,13 @@ std::string osgGlyphsData::formatFromExtension(const std::string& path)
     std::string extension = readers::toLower(file.extension().string());
     if (!extension.empty())
         extension.erase(0, 1);
+    // A known extension first: data.csv is a CSV file, dump.xyz an XYZ file; data.peptide is not.
     const std::vector<PointFormat> formats = getPointFormats();
+    for (const PointFormat& format : formats)
+    {
+        if (hasExtension(format, extension))
+            return format.name;
+    }
     for (const PointFormat& format : formats)
     {
         for (const std::string& prefix : format.prefixes)
@@ -109,11 +115,6 @@ std::string osgGlyphsData::formatFromExtension(const std::string& path)
             if (readers::startsWith(filename, prefix))
                 return format.name;
         }
-    }
-    for (const PointFormat& format : formats)
-    {
-        if (hasExtension(format, extension))
-            return format.name;
     }
     return std::string();
 }
