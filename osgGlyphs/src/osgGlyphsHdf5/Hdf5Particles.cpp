@@ -254,15 +254,28 @@ void addSpecies(PointData& data, const std::string& name)
 {
     const std::vector<float>& type = *data.getColumn("type");
     const double origin = data.getColumnOrigin("type");
+    // Particles of a type often follow each other: a value like the one before costs no search.
     std::set<double> distinct;
+    float previous = std::numeric_limits<float>::quiet_NaN();
     for (float value : type)
-        distinct.insert(origin + double(value));
+    {
+        if (value != previous)
+            distinct.insert(origin + double(value));
+        previous = value;
+    }
     const std::vector<double> ordered(distinct.begin(), distinct.end());
     std::vector<float> species(type.size());
+    float previousIndex = 0.0f;
+    previous = std::numeric_limits<float>::quiet_NaN();
     for (std::size_t i = 0; i < species.size(); ++i)
     {
-        const double value = origin + double(type[i]);
-        species[i] = float(std::lower_bound(ordered.begin(), ordered.end(), value) - ordered.begin());
+        if (type[i] != previous)
+        {
+            const double value = origin + double(type[i]);
+            previousIndex = float(std::lower_bound(ordered.begin(), ordered.end(), value) - ordered.begin());
+            previous = type[i];
+        }
+        species[i] = previousIndex;
     }
     std::vector<std::string> labels;
     for (double value : ordered)
