@@ -7,6 +7,7 @@
 
 #include "BinaryFile.h"
 #include "CellBox.h"
+#include "FormatFrameFile.h"
 #include "Formats.h"
 
 #include <cmath>
@@ -29,12 +30,12 @@ enum Control
     CharmmVersion = 19
 };
 
-class DcdFile : public FrameFile
+class DcdFile : public FormatFrameFile
 {
 public:
-    explicit DcdFile(const std::string& path) : FrameFile(path, "dcd") {}
+    explicit DcdFile(const std::string& path) : FormatFrameFile(path, "dcd") {}
 
-    void readHeader()
+    void findFrames() override
     {
         const FilePlace place{&_path};
         detectMarkers(place);
@@ -86,8 +87,6 @@ public:
                                                 " frames, the file's size holds " + std::to_string(_frames)));
     }
 
-    bool open(std::string& error) { return _file.open(_path, error); }
-
     std::size_t getNumFrames() const override { return _frames; }
 
     FrameInfo getFrameInfo(std::size_t frame) const override
@@ -101,20 +100,6 @@ public:
         info.points = _atoms;
         info.fileFrame = frame;
         return info;
-    }
-
-    osg::ref_ptr<PointData> readFrame(std::size_t frame, const PointShare& share,
-                                      std::string& error) const override
-    {
-        try
-        {
-            return decode(frame, share);
-        }
-        catch (const FormatError& failure)
-        {
-            error = failure.message;
-        }
-        return nullptr;
     }
 
 private:
@@ -174,7 +159,7 @@ private:
         skipRecord(offset, length, place, what);
     }
 
-    osg::ref_ptr<PointData> decode(std::size_t frame, const PointShare& share) const
+    osg::ref_ptr<PointData> decodeFrame(std::size_t frame, const PointShare& share) const override
     {
         const FilePlace place{&_path, frame};
         if (frame >= _frames)
@@ -230,7 +215,6 @@ private:
         setCellLengthsAngles(data, cell[0], cell[2], cell[5], angles[0], angles[1], angles[2]);
     }
 
-    BinaryFile _file;
     uint64_t _marker = 4;
     bool _bigEndian = false;
     uint32_t _atoms = 0;
@@ -247,17 +231,5 @@ private:
 
 osg::ref_ptr<FrameFile> formats::openDcd(const std::string& path, const FrameFileOptions&, std::string& error)
 {
-    osg::ref_ptr<DcdFile> file = new DcdFile(path);
-    if (!file->open(error))
-        return nullptr;
-    try
-    {
-        file->readHeader();
-    }
-    catch (const FormatError& failure)
-    {
-        error = failure.message;
-        return nullptr;
-    }
-    return file;
+    return openFormatFile<DcdFile>(path, error);
 }

@@ -11,6 +11,7 @@
 // byte ranges, and a frame's atom lines outside a share are counted past, not parsed.
 
 #include "CellBox.h"
+#include "FormatFrameFile.h"
 #include "Formats.h"
 #include "TextLines.h"
 
@@ -158,14 +159,12 @@ void readBox(const TextLines& lines, std::string_view line, PointData& frame)
                    osg::Vec3d(v[7], v[8], v[2]));
 }
 
-class GroFile : public FrameFile
+class GroFile : public FormatFrameFile
 {
 public:
-    explicit GroFile(const std::string& path) : FrameFile(path, "gro") {}
+    explicit GroFile(const std::string& path) : FormatFrameFile(path, "gro", OutOfMemory::Reported) {}
 
-    bool open(std::string& error) { return _file.open(_path, error); }
-
-    void scan()
+    void findFrames() override
     {
         TextLines lines(_file, TextPlace{&_path}, 0, _file.getSize(), 0);
         while (scanFrame(lines))
@@ -180,24 +179,6 @@ public:
     FrameInfo getFrameInfo(std::size_t frame) const override
     {
         return frame < _frames.size() ? _frames[frame] : FrameInfo();
-    }
-
-    osg::ref_ptr<PointData> readFrame(std::size_t frame, const PointShare& share,
-                                      std::string& error) const override
-    {
-        try
-        {
-            return decode(frame, share);
-        }
-        catch (const FormatError& failure)
-        {
-            error = failure.message;
-        }
-        catch (const std::bad_alloc&)
-        {
-            error = _path + ": frame " + std::to_string(frame) + ": out of memory";
-        }
-        return nullptr;
     }
 
 private:
@@ -252,7 +233,7 @@ private:
         _warnings.push_back(place.describe(line, what + "; the frame is cut short and left out"));
     }
 
-    osg::ref_ptr<PointData> decode(std::size_t index, const PointShare& share) const
+    osg::ref_ptr<PointData> decodeFrame(std::size_t index, const PointShare& share) const override
     {
         const TextPlace place{&_path, index};
         if (index >= _frames.size())
@@ -288,7 +269,6 @@ private:
         return data;
     }
 
-    BinaryFile _file;
     std::vector<FrameInfo> _frames;
 };
 
@@ -296,17 +276,5 @@ private:
 
 osg::ref_ptr<FrameFile> formats::openGro(const std::string& path, const FrameFileOptions&, std::string& error)
 {
-    osg::ref_ptr<GroFile> file = new GroFile(path);
-    if (!file->open(error))
-        return nullptr;
-    try
-    {
-        file->scan();
-    }
-    catch (const FormatError& failure)
-    {
-        error = failure.message;
-        return nullptr;
-    }
-    return file;
+    return openFormatFile<GroFile>(path, error);
 }

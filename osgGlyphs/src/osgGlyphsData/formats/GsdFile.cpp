@@ -18,6 +18,7 @@
 
 #include "../readers/Fields.h"
 #include "BinaryFile.h"
+#include "FormatFrameFile.h"
 #include "Formats.h"
 
 #include <algorithm>
@@ -131,14 +132,12 @@ std::string quoted(const std::string& name)
     return readers::quote(name);
 }
 
-class GsdFile : public FrameFile
+class GsdFile : public FormatFrameFile
 {
 public:
-    explicit GsdFile(const std::string& path) : FrameFile(path, "gsd") {}
+    explicit GsdFile(const std::string& path) : FormatFrameFile(path, "gsd") {}
 
-    bool open(std::string& error) { return _file.open(_path, error); }
-
-    void readStructure()
+    void findFrames() override
     {
         const FilePlace place{&_path};
         readHeader(place);
@@ -161,20 +160,6 @@ public:
         info.points = _points[frame];
         info.fileFrame = frame;
         return info;
-    }
-
-    osg::ref_ptr<PointData> readFrame(std::size_t frame, const PointShare& share,
-                                      std::string& error) const override
-    {
-        try
-        {
-            return decode(frame, share);
-        }
-        catch (const FormatError& failure)
-        {
-            error = failure.message;
-        }
-        return nullptr;
     }
 
 private:
@@ -714,7 +699,7 @@ private:
         data.setBox(osg::BoundingBoxd(corner, corner + lengths), tilt);
     }
 
-    osg::ref_ptr<PointData> decode(std::size_t frame, const PointShare& share) const
+    osg::ref_ptr<PointData> decodeFrame(std::size_t frame, const PointShare& share) const override
     {
         const FilePlace place{&_path, frame};
         if (frame >= _frames)
@@ -731,7 +716,6 @@ private:
         return data;
     }
 
-    BinaryFile _file;
     uint32_t _version = 0;
     uint64_t _indexAt = 0;
     uint64_t _indexEntries = 0;
@@ -760,17 +744,5 @@ private:
 
 osg::ref_ptr<FrameFile> formats::openGsd(const std::string& path, const FrameFileOptions&, std::string& error)
 {
-    osg::ref_ptr<GsdFile> file = new GsdFile(path);
-    if (!file->open(error))
-        return nullptr;
-    try
-    {
-        file->readStructure();
-    }
-    catch (const FormatError& failure)
-    {
-        error = failure.message;
-        return nullptr;
-    }
-    return file;
+    return openFormatFile<GsdFile>(path, error);
 }

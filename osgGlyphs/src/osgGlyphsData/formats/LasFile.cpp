@@ -31,6 +31,7 @@
 // A share reads its records alone: record n lies at offset to points + n * record length.
 
 #include "BinaryFile.h"
+#include "FormatFrameFile.h"
 #include "Formats.h"
 
 #include <algorithm>
@@ -238,14 +239,12 @@ const char* const LAZ_REASON = "LAZ (LASzip-compressed LAS) cannot be read: Debi
 /** The records decoded per read. */
 constexpr std::size_t ChunkBytes = std::size_t(2) << 20;
 
-class LasFile : public FrameFile
+class LasFile : public FormatFrameFile
 {
 public:
-    explicit LasFile(const std::string& path) : FrameFile(path, "las") {}
+    explicit LasFile(const std::string& path) : FormatFrameFile(path, "las") {}
 
-    bool open(std::string& error) { return _file.open(_path, error); }
-
-    void readHeader()
+    void findFrames() override
     {
         const FilePlace place{&_path};
         char header[375] = {};
@@ -284,20 +283,6 @@ public:
         info.end = _pointsAt + _points * _recordLength;
         info.points = _points;
         return info;
-    }
-
-    osg::ref_ptr<PointData> readFrame(std::size_t frame, const PointShare& share,
-                                      std::string& error) const override
-    {
-        try
-        {
-            return decode(frame, share);
-        }
-        catch (const FormatError& failure)
-        {
-            error = failure.message;
-        }
-        return nullptr;
     }
 
 private:
@@ -480,7 +465,7 @@ private:
         return std::isfinite(centre) ? std::round(centre) : 0.0;
     }
 
-    osg::ref_ptr<PointData> decode(std::size_t frame, const PointShare& share) const
+    osg::ref_ptr<PointData> decodeFrame(std::size_t frame, const PointShare& share) const override
     {
         const FilePlace place{&_path, frame};
         if (frame != 0)
@@ -560,7 +545,6 @@ private:
         }
     }
 
-    BinaryFile _file;
     uint64_t _pointsAt = 0;
     uint64_t _recordLength = 0;
     uint64_t _points = 0;
@@ -574,17 +558,5 @@ private:
 
 osg::ref_ptr<FrameFile> formats::openLas(const std::string& path, const FrameFileOptions&, std::string& error)
 {
-    osg::ref_ptr<LasFile> file = new LasFile(path);
-    if (!file->open(error))
-        return nullptr;
-    try
-    {
-        file->readHeader();
-    }
-    catch (const FormatError& failure)
-    {
-        error = failure.message;
-        return nullptr;
-    }
-    return file;
+    return openFormatFile<LasFile>(path, error);
 }

@@ -12,6 +12,7 @@
 // The file's lines are scanned once at opening for the frames' byte ranges and atom counts.
 
 #include "CellBox.h"
+#include "FormatFrameFile.h"
 #include "Formats.h"
 #include "TextLines.h"
 
@@ -145,14 +146,12 @@ struct AtomColumns
     }
 };
 
-class PdbFile : public FrameFile
+class PdbFile : public FormatFrameFile
 {
 public:
-    explicit PdbFile(const std::string& path) : FrameFile(path, "pdb") {}
+    explicit PdbFile(const std::string& path) : FormatFrameFile(path, "pdb", OutOfMemory::Reported) {}
 
-    bool open(std::string& error) { return _file.open(_path, error); }
-
-    void scan()
+    void findFrames() override
     {
         TextLines lines(_file, TextPlace{&_path}, 0, _file.getSize(), 0);
         Block block;
@@ -180,24 +179,6 @@ public:
     FrameInfo getFrameInfo(std::size_t frame) const override
     {
         return frame < _frames.size() ? _frames[frame].info : FrameInfo();
-    }
-
-    osg::ref_ptr<PointData> readFrame(std::size_t frame, const PointShare& share,
-                                      std::string& error) const override
-    {
-        try
-        {
-            return decode(frame, share);
-        }
-        catch (const FormatError& failure)
-        {
-            error = failure.message;
-        }
-        catch (const std::bad_alloc&)
-        {
-            error = _path + ": frame " + std::to_string(frame) + ": out of memory";
-        }
-        return nullptr;
     }
 
 private:
@@ -302,7 +283,7 @@ private:
         _frames.push_back(frame);
     }
 
-    osg::ref_ptr<PointData> decode(std::size_t index, const PointShare& share) const
+    osg::ref_ptr<PointData> decodeFrame(std::size_t index, const PointShare& share) const override
     {
         const TextPlace place{&_path, index};
         if (index >= _frames.size())
@@ -338,7 +319,6 @@ private:
         return data;
     }
 
-    BinaryFile _file;
     std::vector<PdbFrame> _frames;
     /** The file has MODEL records: its frames are models. */
     bool _models = false;
@@ -351,17 +331,5 @@ private:
 
 osg::ref_ptr<FrameFile> formats::openPdb(const std::string& path, const FrameFileOptions&, std::string& error)
 {
-    osg::ref_ptr<PdbFile> file = new PdbFile(path);
-    if (!file->open(error))
-        return nullptr;
-    try
-    {
-        file->scan();
-    }
-    catch (const FormatError& failure)
-    {
-        error = failure.message;
-        return nullptr;
-    }
-    return file;
+    return openFormatFile<PdbFile>(path, error);
 }

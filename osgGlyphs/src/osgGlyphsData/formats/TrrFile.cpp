@@ -10,6 +10,7 @@
 
 #include "BinaryFile.h"
 #include "CellBox.h"
+#include "FormatFrameFile.h"
 #include "Formats.h"
 
 #include <algorithm>
@@ -58,14 +59,12 @@ struct TrrFrame
     uint64_t blocks[BlockCount] = {};
 };
 
-class TrrFile : public FrameFile
+class TrrFile : public FormatFrameFile
 {
 public:
-    explicit TrrFile(const std::string& path) : FrameFile(path, "trr") {}
+    explicit TrrFile(const std::string& path) : FormatFrameFile(path, "trr") {}
 
-    bool open(std::string& error) { return _file.open(_path, error); }
-
-    void scan()
+    void findFrames() override
     {
         if (_file.getSize() == 0)
             FilePlace{&_path}.fail(0, "not a TRR file: it is empty");
@@ -112,20 +111,6 @@ public:
         info.hasTime = true;
         info.time = found.time;
         return info;
-    }
-
-    osg::ref_ptr<PointData> readFrame(std::size_t frame, const PointShare& share,
-                                      std::string& error) const override
-    {
-        try
-        {
-            return decode(frame, share);
-        }
-        catch (const FormatError& failure)
-        {
-            error = failure.message;
-        }
-        return nullptr;
     }
 
 private:
@@ -243,7 +228,7 @@ private:
                                std::to_string(size) + " bytes, not " + std::to_string(expected));
     }
 
-    osg::ref_ptr<PointData> decode(std::size_t frame, const PointShare& share) const
+    osg::ref_ptr<PointData> decodeFrame(std::size_t frame, const PointShare& share) const override
     {
         if (frame >= _frames.size())
             FilePlace{&_path, frame}.fail(_file.getSize(), "no such frame (the file holds " +
@@ -310,7 +295,6 @@ private:
             data.addColumn(names[axis], std::move(columns[axis]));
     }
 
-    BinaryFile _file;
     std::vector<TrrFrame> _frames;
 };
 
@@ -318,17 +302,5 @@ private:
 
 osg::ref_ptr<FrameFile> formats::openTrr(const std::string& path, const FrameFileOptions&, std::string& error)
 {
-    osg::ref_ptr<TrrFile> file = new TrrFile(path);
-    if (!file->open(error))
-        return nullptr;
-    try
-    {
-        file->scan();
-    }
-    catch (const FormatError& failure)
-    {
-        error = failure.message;
-        return nullptr;
-    }
-    return file;
+    return openFormatFile<TrrFile>(path, error);
 }

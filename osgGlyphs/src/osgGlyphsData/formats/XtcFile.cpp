@@ -10,6 +10,7 @@
 
 #include "BinaryFile.h"
 #include "CellBox.h"
+#include "FormatFrameFile.h"
 #include "Formats.h"
 #include "XtcCoordinates.h"
 
@@ -51,14 +52,12 @@ void setGromacsBox(PointData& data, const float box[9])
                    osg::Vec3d(box[6], box[7], box[8]));
 }
 
-class XtcFile : public FrameFile
+class XtcFile : public FormatFrameFile
 {
 public:
-    explicit XtcFile(const std::string& path) : FrameFile(path, "xtc") {}
+    explicit XtcFile(const std::string& path) : FormatFrameFile(path, "xtc") {}
 
-    bool open(std::string& error) { return _file.open(_path, error); }
-
-    void scan()
+    void findFrames() override
     {
         if (_file.getSize() == 0)
             FilePlace{&_path}.fail(0, "not an XTC file: it is empty");
@@ -95,20 +94,6 @@ public:
         info.hasTime = true;
         info.time = found.time;
         return info;
-    }
-
-    osg::ref_ptr<PointData> readFrame(std::size_t frame, const PointShare& share,
-                                      std::string& error) const override
-    {
-        try
-        {
-            return decode(frame, share);
-        }
-        catch (const FormatError& failure)
-        {
-            error = failure.message;
-        }
-        return nullptr;
     }
 
 private:
@@ -193,7 +178,7 @@ private:
         return static_cast<uint64_t>(count);
     }
 
-    osg::ref_ptr<PointData> decode(std::size_t frame, const PointShare& share) const
+    osg::ref_ptr<PointData> decodeFrame(std::size_t frame, const PointShare& share) const override
     {
         const FilePlace place{&_path, frame};
         if (frame >= _frames.size())
@@ -283,7 +268,6 @@ private:
             place.fail(bytesAt + byte, error);
     }
 
-    BinaryFile _file;
     std::vector<XtcFrame> _frames;
 };
 
@@ -291,17 +275,5 @@ private:
 
 osg::ref_ptr<FrameFile> formats::openXtc(const std::string& path, const FrameFileOptions&, std::string& error)
 {
-    osg::ref_ptr<XtcFile> file = new XtcFile(path);
-    if (!file->open(error))
-        return nullptr;
-    try
-    {
-        file->scan();
-    }
-    catch (const FormatError& failure)
-    {
-        error = failure.message;
-        return nullptr;
-    }
-    return file;
+    return openFormatFile<XtcFile>(path, error);
 }
