@@ -54,7 +54,17 @@ std::vector<T> readSeries(hid_t file, const std::string& path, hsize_t count, co
                                   ? readAttributeNumbers(file, path, "offset", 1, place).at(0)
                                   : 0.0;
         for (std::size_t i = 0; i < series.size(); ++i)
-            series[i] = static_cast<T>(offset + double(i) * interval[0]);
+        {
+            const double value = offset + double(i) * interval[0];
+            // A step beyond int64 (or not finite) cannot be converted: an error, not a wrapped step.
+            if constexpr (!std::is_same_v<T, double>)
+            {
+                if (!(std::fabs(value) < 9.2e18))
+                    place.fail(path, "gives step " + std::to_string(value) + " to value " +
+                                         std::to_string(i) + ", beyond a 64-bit integer");
+            }
+            series[i] = static_cast<T>(value);
+        }
         return series;
     }
     if (info.dims.size() != 1 || info.dims[0] != count)
