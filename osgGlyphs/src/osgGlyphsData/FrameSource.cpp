@@ -501,8 +501,9 @@ osg::ref_ptr<FrameSource> FrameSource::open(const std::string& path, const Frame
 bool FrameSource::attachTopology(std::string& error)
 {
     const FrameSourceOptions& options = _impl->options;
-    _impl->topology = FrameTopology::read(options.topology, options.topologyFormat,
-                                          [this](const std::string& warning) { _impl->warn(warning); }, error);
+    _impl->topology = FrameTopology::read(
+        options.topology, options.topologyFormat,
+        [this](const std::string& warning) { _impl->warn(warning); }, error);
     return _impl->topology && _impl->topology->apply(*_firstFrame, options.share, _path, 0, error);
 }
 

@@ -195,7 +195,10 @@ public:
         supportsOption("unlit", "No lighting");
     }
 
-    const char* className() const override { return "osgGlyphs point data reader"; }
+    const char* className() const override
+    {
+        return "osgGlyphs point data reader";
+    }
 
     ReadResult readObject(const std::string& file, const Options* options) const override
     {
@@ -241,7 +244,10 @@ private:
         return options ? options->getOptionString() : std::string();
     }
 
-    static ReadResult failure(const std::string& message) { return ReadResult("osgdb_glyphs: " + message); }
+    static ReadResult failure(const std::string& message)
+    {
+        return ReadResult("osgdb_glyphs: " + message);
+    }
 
     /** The glyphs of a dataset, or the error of its reading or mapping. A scene in which a viewer
      * would see no glyph is read with a warning that says why. */
