@@ -34,6 +34,7 @@ if(NOT OSGGLYPHS_FIND_PUBLIC_ONLY)
     osgglyphs_require(osgShadow openscenegraph-osgShadow ${_osgglyphs_osg_package})
     osgglyphs_require(OSMesa osmesa libosmesa6-dev)
     osgglyphs_require(EGL egl libegl-dev)
+    osgglyphs_require(GL gl libgl-dev)
     osgglyphs_require(GLM glm libglm-dev)
     # Compressed trajectories (.gz, .zst), read by osgGlyphsData.
     osgglyphs_require(ZLIB zlib zlib1g-dev)

@@ -61,7 +61,7 @@ bool measure(const MPIShare& mpi, const BenchSettings& settings, osgGlyphs::Glyp
 
     osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer =
         new osgGlyphsHeadless::OffscreenViewer(settings.width, settings.height, settings.backend);
-    error = "cannot create a headless OpenGL context";
+    error = viewer->getContextError();
     if (!mpi.agree(viewer->valid(), error))
         return false;
     const osg::ref_ptr<ImageCompositor> compositor = new ImageCompositor(&mpi);

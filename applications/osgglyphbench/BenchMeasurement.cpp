@@ -166,7 +166,10 @@ osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> createViewer(const BenchSetting
     osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer =
         new osgGlyphsHeadless::OffscreenViewer(settings.width, settings.height, settings.backend);
     if (!viewer->valid())
+    {
+        std::cerr << "osgglyphbench: " << viewer->getContextError() << std::endl;
         return nullptr;
+    }
     viewer->getFrameCapture()->setCaptureDepth(false);
     viewer->getCamera()->setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
     viewer->setSceneData(scene);

@@ -323,8 +323,9 @@ void describeBenchOptions(osg::ApplicationUsage& usage)
                                "cloud, as paged tiles draw them (GlyphCloud::setCompressedPositions).");
     usage.addCommandLineOption("--max-ms <ms>", "Skip the larger n of a technique and shape once its median "
                                                 "frame time exceeds ms (default: no limit).");
-    usage.addCommandLineOption("--headless <osmesa|egl>",
-                               "The headless GL backend (default: OSGGLYPHS_HEADLESS, else osmesa).");
+    usage.addCommandLineOption(
+        "--headless <osmesa|egl>",
+        "The headless GL backend (default: OSGGLYPHS_HEADLESS, else EGL, else OSMesa).");
     usage.addCommandLineOption("--csv <file>", "Write one row per case (columns below), as it goes.");
     usage.addCommandLineOption(
         "--archive <file.osga>",

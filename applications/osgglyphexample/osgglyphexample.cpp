@@ -76,7 +76,7 @@ int renderToFile(osg::Node* scene, const std::string& path, int width, int heigh
         new osgGlyphsHeadless::OffscreenViewer(width, height);
     if (!viewer->valid())
     {
-        std::cerr << "osgglyphexample: no headless OpenGL context (OSMesa or EGL)" << std::endl;
+        std::cerr << "osgglyphexample: " << viewer->getContextError() << std::endl;
         return 1;
     }
     viewer->setSceneData(scene);

@@ -43,7 +43,10 @@ int renderFrames(osg::Group* scene, osgGlyphsData::TrajectoryPlayer* player, con
     osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer =
         new osgGlyphsHeadless::OffscreenViewer(640, 480);
     if (!viewer->valid())
+    {
+        std::cerr << "osgglyphplayer: " << viewer->getContextError() << std::endl;
         return 1;
+    }
     viewer->setSceneData(scene);
     viewer->setCameraManipulator(new osgGA::TrackballManipulator); // frames the first frame
     player->getCache()->getSource()->waitForIndex();

@@ -800,6 +800,7 @@ int main(int argc, char** argv)
     bench.viewer = new osgGlyphsHeadless::OffscreenViewer(bench.width, bench.height);
     std::string error;
     osg::ref_ptr<osg::Group> empty = new osg::Group;
+    error = bench.viewer->getContextError();
     if (!bench.viewer->valid() || !draw(bench, empty.get(), error))
     {
         std::cerr << PROGRAM << ": cannot draw headless: " << error << std::endl;

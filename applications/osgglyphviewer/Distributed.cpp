@@ -88,6 +88,8 @@ int renderDistributed(bool optionsRead, const ViewerOptions& options, std::strin
     OffscreenSharing offscreen;
     offscreen.compositor = compositor;
     offscreen.output = output;
+    offscreen.processName =
+        "rank " + std::to_string(mpi->getRank()) + " of " + std::to_string(mpi->getSize());
     offscreen.agree = sharing.agree;
     offscreen.describeFrame = [mpi, compositor](double frameMilliseconds)
     { return describePhases(*mpi, *compositor, frameMilliseconds); };

@@ -12,6 +12,7 @@
 #include <osgDB/WriteFile>
 
 #include <iostream>
+#include <sstream>
 #include <thread>
 #include <vector>
 
@@ -75,6 +76,16 @@ bool showNextFrame(ViewerScene& scene, double timeout, std::string& error)
     return true;
 }
 
+/** The --camera option that gives this view again: for pictures of one trajectory rendered in pieces. */
+void printCameraOption(const CameraView& view)
+{
+    std::ostringstream line;
+    line.precision(9);
+    for (const osg::Vec3d& v : {view.eye, view.center, view.up})
+        line << " " << v.x() << " " << v.y() << " " << v.z();
+    std::cout << PROGRAM << ": camera:" << line.str() << std::endl;
+}
+
 }
 
 int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
@@ -82,16 +93,17 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
 {
     const auto agree = [&sharing](bool ok, std::string& error)
     { return sharing.agree ? sharing.agree(ok, error) : ok; };
-    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer =
-        new osgGlyphsHeadless::OffscreenViewer(options.width, options.height, options.backend);
-    std::string contextError = std::string("cannot create a headless OpenGL context through ") +
-                               osgGlyphsHeadless::getHeadlessBackendName(options.backend);
+    osg::ref_ptr<osgGlyphsHeadless::OffscreenViewer> viewer = new osgGlyphsHeadless::OffscreenViewer(
+        options.width, options.height, options.backend, options.eglDevice);
+    std::string contextError = viewer->getContextError();
     if (!agree(viewer->valid(), contextError))
     {
         if (sharing.output)
             std::cerr << PROGRAM << ": " << contextError << std::endl;
         return 1;
     }
+    std::cout << PROGRAM << (sharing.processName.empty() ? "" : " (" + sharing.processName + ")")
+              << ": OpenGL through " << viewer->getContext()->getRendererInfo().describe() << std::endl;
     const double aspect = static_cast<double>(options.width) / options.height;
     osg::Camera* camera = viewer->getCamera();
     camera->setClearColor(options.background);
@@ -113,6 +125,8 @@ int renderOffscreen(ViewerScene& scene, const ViewerOptions& options,
 
     const CameraView home = options.hasCamera ? options.camera : scene.getHomeView(options.fov, aspect);
     setProjectionForView(*camera, options.fov, aspect, home);
+    if (sharing.output && !options.hasCamera)
+        printCameraOption(home);
     if (!sharing.compositor.valid()) // a share may well be out of view
         warnIfGlyphsHidden(*scene.getContent(), *camera, home);
     if (options.playback.hasFrameRange || !options.playback.movie.empty())

@@ -20,6 +20,8 @@ struct OffscreenSharing
     osg::ref_ptr<osgGlyphsHeadless::FrameCapture> compositor;
     /** Whether this process writes the outputs and prints what it did (rank 0). */
     bool output = true;
+    /** How this process names itself where every process prints ("rank 2 of 3"); empty alone. */
+    std::string processName;
     /** Collective: whether every process succeeded, else the first failure's error in all. */
     std::function<bool(bool ok, std::string& error)> agree;
     /** Collective, after each frame: one line on where the frame's time went. */

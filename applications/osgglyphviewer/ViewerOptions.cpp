@@ -195,9 +195,22 @@ bool readOutputOptions(osg::ArgumentParser& arguments, ViewerOptions& options, s
     {
         if (!osgGlyphsHeadless::parseHeadlessBackend(backend, options.backend))
         {
-            error = "--headless '" + backend + "': unknown backend (osmesa, egl)";
+            error = "--headless '" + backend + "': unknown backend (egl, osmesa, default)";
             return false;
         }
+        options.offscreen = true;
+    }
+    std::string device;
+    if (arguments.read("--egl-device", device))
+    {
+        char* end = nullptr;
+        const long index = std::strtol(device.c_str(), &end, 10);
+        if (device.empty() || *end != '\0' || index < 0 || index > 4096)
+        {
+            error = "--egl-device '" + device + "': not a device index (0, 1, ...)";
+            return false;
+        }
+        options.eglDevice = static_cast<int>(index);
         options.offscreen = true;
     }
     if (arguments.read("--output", options.output))
@@ -281,10 +294,17 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
                                "Cast shadows (osgShadow's ViewDependentShadowMap) from a light above "
                                "(+z) onto a ground plane under the data and onto the glyphs.");
 
-    usage.addCommandLineOption("--offscreen", "Render without a display (through OSMesa unless --headless "
-                                              "says otherwise) instead of opening a window.");
-    usage.addCommandLineOption("--headless <osmesa|egl>",
-                               "The GL backend of --offscreen; implies --offscreen.");
+    usage.addCommandLineOption("--offscreen", "Render without a display, through EGL (a GPU, else Mesa's "
+                                              "software renderer) unless --headless says otherwise, instead "
+                                              "of opening a window. Prints the renderer used.");
+    usage.addCommandLineOption("--headless <egl|osmesa|default>",
+                               "The GL backend of --offscreen; implies --offscreen. default: "
+                               "OSGGLYPHS_HEADLESS, else EGL, else OSMesa (which needs "
+                               "LD_PRELOAD=libOSMesa.so.8).");
+    usage.addCommandLineOption("--egl-device <n>",
+                               "The EGL device (GPU) to render on; implies --offscreen. Default: "
+                               "OSGGLYPHS_EGL_DEVICE, else under mpirun the rank's local index modulo "
+                               "the devices, else the first.");
     usage.addCommandLineOption("--output <file.png>", "Write the rendered image; implies --offscreen. With "
                                                       "--frame-range, a pattern such as out%04d.png.");
     usage.addCommandLineOption("--depth-output <file.pfm>",

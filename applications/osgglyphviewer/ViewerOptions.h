@@ -68,6 +68,8 @@ struct ViewerOptions
     // Output
     bool offscreen = false;
     osgGlyphsHeadless::HeadlessBackend backend = osgGlyphsHeadless::HeadlessBackend::Default;
+    /** --egl-device; -1: OSGGLYPHS_EGL_DEVICE, else the MPI local rank, else the first device. */
+    int eglDevice = -1;
     std::string output;
     std::string depthOutput;
     unsigned int frames = 0; // --frames K; 0: one frame headless, run until closed in a window

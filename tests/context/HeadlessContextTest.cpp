@@ -1,6 +1,8 @@
 // Proves that each headless backend renders through Mesa: OSG's direct gl* calls, its
 // extension lookups by name, and a shader-drawn pixel all reach the context's implementation.
+// This executable loads libOSMesa before libGL (tests/CMakeLists.txt), so both backends work.
 
+#include "GlyphTestScenes.h"
 #include "RenderHarness.h"
 
 #include <osgGlyphsHeadless/HeadlessContext>
@@ -10,6 +12,7 @@
 #include <osg/Geometry>
 #include <osg/Program>
 
+#include <cstring>
 #include <dlfcn.h>
 
 using namespace osgGlyphsTest;
@@ -116,6 +119,54 @@ TEST_P(HeadlessBackends, SeveralContextsInOneProcess)
     EXPECT_TRUE(colorNear(a, 5, 5, osg::Vec4ub(64, 128, 191, 255), 1));
     EXPECT_TRUE(colorNear(b, 40, 10, osg::Vec4ub(64, 128, 191, 255), 1));
     EXPECT_TRUE(colorNear(c, 31, 31, osg::Vec4ub(64, 128, 191, 255), 1));
+}
+
+TEST_P(HeadlessBackends, ReportsWhatItRendersThrough)
+{
+    Renderer renderer(16, 16, GetParam());
+    ASSERT_TRUE(renderer.getViewer()->valid());
+    renderer.render(createShaderQuad().get());
+    const osgGlyphsHeadless::HeadlessRendererInfo& info =
+        renderer.getViewer()->getContext()->getRendererInfo();
+    EXPECT_NE(info.renderer.find("llvmpipe"), std::string::npos) << info.describe();
+    EXPECT_NE(info.version.find("Mesa"), std::string::npos) << info.describe();
+    if (GetParam() == HeadlessBackend::EGL)
+        EXPECT_EQ(info.platform.rfind("EGL device 0: Mesa's software renderer", 0), 0u) << info.platform;
+    else
+        EXPECT_EQ(info.platform, "OSMesa");
+}
+
+TEST(HeadlessContext, EGLDeviceAndOSMesaRenderTheSameBytes)
+{
+    const std::vector<SphereSpec> spheres = {{{-0.6f, 0.0f, 0.0f}, 0.7f, {220, 60, 40, 255}},
+                                             {{0.5f, 0.2f, 0.3f}, 0.6f, {40, 160, 220, 255}},
+                                             {{0.0f, -0.5f, -0.4f}, 0.5f, {240, 220, 60, 255}}};
+    osg::ref_ptr<osg::Group> scene = new osg::Group;
+    scene->addChild(createSphereCloud(spheres, true));
+    scene->addChild(group({createFlatQuad(osg::Vec3(0, 0, -0.5f), osg::Vec3(3, 0, 0), osg::Vec3(0, 3, 0),
+                                          osg::Vec4(0.5f, 0.5f, 0.5f, 1))
+                               .get()}));
+    std::vector<Frame> frames;
+    for (HeadlessBackend backend : {HeadlessBackend::EGL, HeadlessBackend::OSMesa})
+    {
+        Renderer renderer(96, 64, backend);
+        ASSERT_TRUE(renderer.getViewer()->valid());
+        renderer.setLookAt(osg::Vec3d(0.5, -4, 3), osg::Vec3d(), osg::Vec3d(0, 0, 1));
+        renderer.setPerspective(40, 1, 20);
+        frames.push_back(renderer.render(scene.get()));
+    }
+    const osg::Image& egl = *frames[0].color;
+    const osg::Image& mesa = *frames[1].color;
+    ASSERT_EQ(egl.getTotalSizeInBytes(), mesa.getTotalSizeInBytes());
+    EXPECT_EQ(std::memcmp(egl.data(), mesa.data(), egl.getTotalSizeInBytes()), 0);
+    EXPECT_EQ(
+        std::memcmp(frames[0].depth->data(), frames[1].depth->data(), frames[0].depth->getTotalSizeInBytes()),
+        0);
+    int covered = 0;
+    for (int y = 0; y < frames[0].height(); ++y)
+        for (int x = 0; x < frames[0].width(); ++x)
+            covered += frames[0].isCovered(x, y);
+    EXPECT_GT(covered, 96 * 64 / 4); // Not two blank pictures.
 }
 
 INSTANTIATE_TEST_SUITE_P(, HeadlessBackends, ::testing::Values(HeadlessBackend::OSMesa, HeadlessBackend::EGL),

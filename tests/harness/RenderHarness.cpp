@@ -1,5 +1,6 @@
 #include "RenderHarness.h"
 
+#include <iostream>
 #include <osgGlyphsHeadless/DepthImage>
 
 #include <OpenThreads/Thread>
@@ -158,6 +159,8 @@ void Frame::pixelRay(double wx, double wy, osg::Vec3d& origin, osg::Vec3d& direc
 Renderer::Renderer(int width, int height, osgGlyphsHeadless::HeadlessBackend backend)
     : _viewer(new osgGlyphsHeadless::OffscreenViewer(width, height, backend))
 {
+    if (!_viewer->valid())
+        std::cerr << "no headless context: " << _viewer->getContextError() << std::endl;
     osg::Camera* camera = _viewer->getCamera();
     camera->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
     camera->setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 1.0f));

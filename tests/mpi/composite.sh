@@ -10,7 +10,7 @@
 # csv-sphere (a generated CSV split by its bytes; default radius from every 3rd point),
 # dcd-frames (a DCD's fourth frame, each rank reading its records' part: tests/data/formats),
 # empty-share (fewer atoms than ranks), bad-share (a malformed atom in the last rank's share:
-# every rank ends with that one error).
+# every rank ends with that one error), devices (each rank reports the EGL device it chose).
 set -euo pipefail
 viewer=$1 work=$2 case=$3
 formats=$(cd "$(dirname "$0")/../data/formats" && pwd)
@@ -93,5 +93,15 @@ bad-share)
     [ "$(grep -c 'osgglyphviewer: bad.lammpstrj:44: ' bad.err)" = 1 ] || { echo "bad-share: not one error line"; exit 1; }
     [ ! -e bad.png ] || { echo "bad-share: wrote an image"; exit 1; }
     echo "bad-share: every rank ended with the one error of the rank that could not read its share" ;;
+devices)
+    mpi 3 --random 300 --offscreen --output devices.png > devices.log
+    for rank in 0 1 2; do
+        grep -q "^osgglyphviewer (rank $rank of 3): OpenGL through EGL device 0: .*OMPI_COMM_WORLD_LOCAL_RANK=$rank of 1 EGL device: " devices.log ||
+            { cat devices.log; echo "devices: rank $rank does not report the device it chose"; exit 1; }
+    done
+    OSGGLYPHS_EGL_DEVICE=4 mpi 3 --random 300 --offscreen --output none.png > none.log 2> none.err && exit 1
+    [ "$(grep -c '^osgglyphviewer: OSGGLYPHS_EGL_DEVICE=4 is not a device: there is 1 EGL device$' none.err)" = 1 ] ||
+        { cat none.err; echo "devices: not one error naming the device"; exit 1; }
+    echo "devices: each of 3 ranks reports the EGL device its local rank chose; a missing device is one error" ;;
 *) echo "composite.sh: unknown case $case"; exit 2 ;;
 esac

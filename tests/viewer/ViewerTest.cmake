@@ -3,7 +3,7 @@
 #         -DDATA_DIR=<data> -DWORK_DIR=<scratch> -P ViewerTest.cmake
 # Cases: render, cone, frame, malformed, unknown_column, unknown_option, frames, default, help,
 # stray_shaders, broken_shader, pick, hidden_cones, hidden_radius, hidden_sub_pixel, hidden_bounds,
-# far, vast, clip, radius_column, shadows, screen_effects.
+# far, vast, clip, radius_column, shadows, screen_effects, egl_device.
 cmake_minimum_required(VERSION 3.25)
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -99,12 +99,28 @@ elseif(CASE STREQUAL "default")
         message(FATAL_ERROR "no line naming the image and the time")
     endif()
     check(coverage default.png 0.2)
+    if(NOT out MATCHES "OpenGL through EGL device 0: Mesa's software renderer of 1, chosen by the first of 1 EGL device: [^\n]*llvmpipe")
+        message(FATAL_ERROR "no line naming the EGL device and the renderer")
+    endif()
+elseif(CASE STREQUAL "egl_device")
+    # A device chosen by option or environment; one that does not exist is one clear error.
+    expect_success(--egl-device 0 --output device.png --size 64 48)
+    if(NOT out MATCHES "EGL device 0: [^\n]*chosen by device 0 \\(requested\\)")
+        message(FATAL_ERROR "--egl-device 0 is not reported as requested")
+    endif()
+    expect_failure("device 3 \\(requested\\) is not a device: there is 1 EGL device" --egl-device 3 --output x.png)
+    expect_failure("--egl-device 'gpu': not a device index" --egl-device gpu --output x.png)
+    set(ENV{OSGGLYPHS_EGL_DEVICE} 2)
+    expect_failure("OSGGLYPHS_EGL_DEVICE=2 is not a device" --output x.png)
+    unset(ENV{OSGGLYPHS_EGL_DEVICE})
+    set(ENV{OSGGLYPHS_HEADLESS} osmesa)
+    expect_failure("the OSMesa backend cannot be used in this process: .*LD_PRELOAD=libOSMesa.so.8" --output x.png)
 elseif(CASE STREQUAL "help")
     expect_success(--help)
     foreach(option --format --frame --random --seed --position --radius --radius-by --color-by --colormap --range
             --vector --length-scale --glyph --unlit --technique --size --camera --fov --background --clip --clip-cap
-            --shadows --ao --ao-mode --ao-radius --outline --offscreen --headless --output --depth-output --frames
-            --pick)
+            --shadows --ao --ao-mode --ao-radius --outline --offscreen --headless --egl-device --output
+            --depth-output --frames --pick)
         if(NOT out MATCHES "\n  ${option} ")
             message(FATAL_ERROR "--help does not list ${option}")
         endif()

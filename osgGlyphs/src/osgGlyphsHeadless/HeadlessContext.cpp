@@ -3,8 +3,6 @@
 #include <osg/GLExtensions>
 #include <osg/Notify>
 
-#include <GL/osmesa.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -15,7 +13,7 @@ using namespace osgGlyphsHeadless;
 namespace
 {
 
-thread_local const HeadlessContext* s_currentContext = nullptr;
+thread_local HeadlessContext* s_currentContext = nullptr;
 
 const char* const OSG_EXTENSION_LOOKUP_SYMBOL = "_ZN3osg21getGLExtensionFuncPtrEPKc";
 
@@ -48,19 +46,28 @@ std::string objectDefining(void* address)
     return "nowhere";
 }
 
+/** OSGGLYPHS_HEADLESS's backend; Default when it is unset or names none. */
 HeadlessBackend backendFromEnvironment()
 {
-    HeadlessBackend backend = HeadlessBackend::OSMesa;
+    HeadlessBackend backend = HeadlessBackend::Default;
     if (const char* value = std::getenv("OSGGLYPHS_HEADLESS"))
     {
-        if (!parseHeadlessBackend(value, backend) || backend == HeadlessBackend::Default)
+        if (!parseHeadlessBackend(value, backend))
         {
             OSG_WARN << "osgGlyphs: OSGGLYPHS_HEADLESS=\"" << value
-                     << "\" is not a backend (osmesa or egl); using osmesa." << std::endl;
-            backend = HeadlessBackend::OSMesa;
+                     << "\" is not a backend (osmesa, egl or default); trying EGL, then OSMesa." << std::endl;
+            backend = HeadlessBackend::Default;
         }
     }
     return backend;
+}
+
+using GetString = const GLubyte* (*)(GLenum);
+
+std::string glString(GetString getString, GLenum name)
+{
+    const GLubyte* text = getString ? getString(name) : nullptr;
+    return text ? reinterpret_cast<const char*>(text) : "";
 }
 
 } // namespace
@@ -108,16 +115,26 @@ bool osgGlyphsHeadless::parseHeadlessBackend(const std::string& name, HeadlessBa
     return false;
 }
 
+std::string HeadlessRendererInfo::describe() const
+{
+    return platform + ": " + vendor + ", " + renderer + ", OpenGL " + version;
+}
+
 bool HeadlessContext::isOSMesaReachable(std::string& reason)
 {
     // Every gl* function that Debian's OSG libraries call directly is exported by both
     // libOSMesa and glvnd's libGL, so one of them tells which library the loader searches first.
     void* global = dlsym(RTLD_DEFAULT, "glGetString");
-    void* mesa = reinterpret_cast<void*>(&OSMesaGetCurrentContext);
+    void* mesa = detail::findOSMesaFunction("OSMesaGetCurrentContext");
+    if (!mesa)
+    {
+        reason = "libOSMesa.so.8 cannot be loaded (" + detail::getOSMesaLoadError() + ")";
+        return false;
+    }
     if (objectDefining(global) != objectDefining(mesa))
     {
         reason = "glGetString resolves to " + objectDefining(global) + ", not to " + objectDefining(mesa) +
-                 ": link osgGlyphs (or libOSMesa) before OpenGL and OpenSceneGraph, or use EGL";
+                 ": load libOSMesa before libGL (LD_PRELOAD=libOSMesa.so.8, or link it first), or use EGL";
         return false;
     }
     void* lookup = dlsym(RTLD_DEFAULT, OSG_EXTENSION_LOOKUP_SYMBOL);
@@ -132,37 +149,93 @@ bool HeadlessContext::isOSMesaReachable(std::string& reason)
 }
 
 osg::ref_ptr<HeadlessContext> HeadlessContext::create(osg::GraphicsContext::Traits* traits,
-                                                      HeadlessBackend backend)
+                                                      HeadlessBackend backend, int eglDevice,
+                                                      std::string* error)
 {
     osg::ref_ptr<osg::GraphicsContext::Traits> completed = new osg::GraphicsContext::Traits(*traits);
     detail::completeHeadlessTraits(*completed);
+    const auto fail = [error](const std::string& why) -> osg::ref_ptr<HeadlessContext>
+    {
+        if (error)
+            *error = why;
+        else
+            OSG_WARN << "osgGlyphs: " << why << std::endl;
+        return nullptr;
+    };
+    const auto realized = [&fail](osg::ref_ptr<HeadlessContext> context)
+    { return context->realize() ? context : fail(context->getFailure()); };
 
-    const bool chosenByDefault = backend == HeadlessBackend::Default;
-    if (chosenByDefault)
+    if (backend == HeadlessBackend::Default)
         backend = backendFromEnvironment();
 
+    std::string reason;
+    if (backend == HeadlessBackend::OSMesa && !isOSMesaReachable(reason))
+        return fail("the OSMesa backend cannot be used in this process: " + reason);
     if (backend == HeadlessBackend::OSMesa)
-    {
-        std::string reason;
-        if (isOSMesaReachable(reason))
-            return detail::createOSMesaContext(completed.get());
-        if (!chosenByDefault)
-        {
-            OSG_WARN << "osgGlyphs: the OSMesa backend cannot be used in this process: " << reason
-                     << std::endl;
-            return nullptr;
-        }
-        OSG_WARN << "osgGlyphs: falling back to EGL, because " << reason << std::endl;
-    }
-    return detail::createEGLContext(completed.get());
+        return realized(detail::createOSMesaContext(completed.get()));
+    if (backend == HeadlessBackend::EGL)
+        return realized(detail::createEGLContext(completed.get(), eglDevice));
+
+    osg::ref_ptr<HeadlessContext> egl = detail::createEGLContext(completed.get(), eglDevice);
+    if (egl->realize())
+        return egl;
+    if (detail::isEGLDeviceRequestInvalid(eglDevice))
+        return fail(egl->getFailure()); // A device that does not exist is the caller's mistake, not EGL's.
+    if (!isOSMesaReachable(reason))
+        return fail(egl->getFailure() + "; and OSMesa cannot be used: " + reason);
+    OSG_NOTICE << "osgGlyphs: " << egl->getFailure() << "; rendering through OSMesa." << std::endl;
+    return realized(detail::createOSMesaContext(completed.get()));
 }
 
-osg::ref_ptr<HeadlessContext> HeadlessContext::create(int width, int height, HeadlessBackend backend)
+osg::ref_ptr<HeadlessContext> HeadlessContext::create(int width, int height, HeadlessBackend backend,
+                                                      int eglDevice, std::string* error)
 {
     osg::ref_ptr<osg::GraphicsContext::Traits> traits = new osg::GraphicsContext::Traits;
     traits->width = width;
     traits->height = height;
-    return create(traits.get(), backend);
+    return create(traits.get(), backend, eglDevice, error);
+}
+
+bool HeadlessContext::setFailure(const std::string& failure)
+{
+    _failure = failure;
+    return false;
+}
+
+bool HeadlessContext::inspectRenderer(const std::string& platform)
+{
+    _failure.clear();
+    // OSG keeps the GL functions it looked up per context ID, and reuses the ID of a closed
+    // context: functions of another backend's context would be called through this one.
+    if (!_traits->sharedContext.valid())
+        osg::GLExtensions::Set(getState()->getContextID(), nullptr);
+    HeadlessContext* previous = s_currentContext;
+    if (!makeCurrentImplementation())
+        return setFailure(platform + ": the new context cannot be made current");
+    const GetString own = reinterpret_cast<GetString>(getProcAddress("glGetString"));
+    _rendererInfo.platform = platform;
+    _rendererInfo.vendor = glString(own, GL_VENDOR);
+    _rendererInfo.renderer = glString(own, GL_RENDERER);
+    _rendererInfo.version = glString(own, GL_VERSION);
+    // What OSG's libraries see: they call glGetString and ~100 other gl* functions directly.
+    const std::string seenByOSG = glString(&::glGetString, GL_RENDERER);
+    releaseContextImplementation();
+    if (previous && previous != this)
+        previous->makeCurrentImplementation();
+
+    if (seenByOSG != _rendererInfo.renderer || seenByOSG.empty())
+    {
+        const std::string renderer = _rendererInfo.renderer;
+        _rendererInfo = HeadlessRendererInfo();
+        return setFailure(
+            platform + " renders through \"" + renderer + "\", but OSG's gl* calls resolve to " +
+            objectDefining(dlsym(RTLD_DEFAULT, "glGetString")) + " and reach \"" + seenByOSG + "\"" +
+            (getBackend() == HeadlessBackend::EGL
+                 ? ": libOSMesa is loaded before libGL; do not link or preload it to render through EGL"
+                 : ": load libOSMesa before libGL (LD_PRELOAD=libOSMesa.so.8), or use EGL"));
+    }
+    OSG_INFO << "osgGlyphs: headless context: " << _rendererInfo.describe() << std::endl;
+    return true;
 }
 
 const HeadlessContext* HeadlessContext::getCurrent()

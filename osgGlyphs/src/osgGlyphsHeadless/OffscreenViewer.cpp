@@ -7,8 +7,9 @@
 
 using namespace osgGlyphsHeadless;
 
-OffscreenViewer::OffscreenViewer(int width, int height, HeadlessBackend backend)
-    : _context(HeadlessContext::create(width, height, backend)), _capture(new FrameCapture)
+OffscreenViewer::OffscreenViewer(int width, int height, HeadlessBackend backend, int eglDevice)
+    : _context(HeadlessContext::create(width, height, backend, eglDevice, &_contextError)),
+      _capture(new FrameCapture)
 {
     setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
     osg::Camera* camera = getCamera();
