@@ -1,5 +1,6 @@
 #version 330 compatibility
 #extension GL_ARB_shader_storage_buffer_object : require
+#extension GL_ARB_shader_image_load_store : require
 #extension GL_ARB_shading_language_420pack : require
 #extension GL_ARB_shading_language_packing : require
 // osgGlyphs, the resolve of osgGlyphs::DepthPeeling's k-buffer: the pixel's list blended front to

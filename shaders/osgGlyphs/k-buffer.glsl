@@ -4,8 +4,9 @@
 // it. The list is exactly what the same number of peeled layers would hold.
 //
 // It needs GL_ARB_shader_storage_buffer_object, GL_ARB_shading_language_420pack,
-// GL_ARB_shading_language_packing and, to insert, GL_ARB_shader_image_load_store's memory barrier
-// (all in OpenGL 4.3), which a shader enables at its top: the directives may not follow code.
+// GL_ARB_shading_language_packing and GL_ARB_shader_image_load_store (the buffer's coherent
+// qualifier and, to insert, the memory barrier), all in OpenGL 4.3, which a shader enables at its
+// top: the directives may not follow code.
 
 // Per pixel (row by row from the window's origin): a lock (0 free, 1 held), the depths of the
 // nearest fragments as float bits (nearest first, EMPTY_LAYER where none), and their colours as
