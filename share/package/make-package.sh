@@ -129,15 +129,22 @@ mkdir -p "$docs/licenses"
 declare -A package_of=()
 mapfile -t sonames < <(printf '%s\n' "${!bundled[@]}" | sort)
 real_names=()
-for soname in "${sonames[@]}"; do real_names+=("/$(basename "$(readlink -f "${bundled[$soname]}")")"); done
+for soname in "${sonames[@]}"; do
+    real=$(readlink -f "${bundled[$soname]}")
+    real_names+=("*/$(basename "$(dirname "$real")")/$(basename "$real")")
+done
 while IFS= read -r line; do
-    package_of[${line##*/}]=${line%%:*}
+    [[ $line == diversion* ]] || package_of[${line##*/}]=${line%%:*}
 done < <(dpkg -S "${real_names[@]}" 2>/dev/null || true)
+declare -A version_of=()
+while read -r package package_version; do
+    version_of[$package]=$package_version
+done < <(dpkg-query -W -f='${Package} ${Version}\n' $(printf '%s\n' "${package_of[@]}" | sort -u) 2>/dev/null || true)
 {
-    echo "# soname  Debian package"
+    echo "# soname  Debian package  version"
     for soname in "${sonames[@]}"; do
         package=${package_of[$(basename "$(readlink -f "${bundled[$soname]}")")]:-?}
-        echo "$soname  $package"
+        echo "$soname  $package  ${version_of[$package]:-?}"
         copyright=/usr/share/doc/$package/copyright
         if [[ -f $copyright ]]; then cp "$copyright" "$docs/licenses/$package.copyright"; fi
     done
