@@ -43,13 +43,16 @@ find "$stage/lib" -maxdepth 1 -name '*.so' -type l -delete
 plugins=$(echo "$stage"/lib/osgPlugins-*)
 [[ -d $plugins ]] || { echo "make-package: no osgPlugins folder in the install" >&2; exit 1; }
 
-# The ELF files: programs, libraries and plugins (share/ holds none).
+# The ELF files: programs, libraries and plugins (share/ holds none), in one readelf call.
 elf_files() {
-    find "$stage/lib" "$stage/libexec" -type f | while read -r file; do
-        [[ $(head -c4 "$file") == $'\x7fELF' ]] && echo "$file"
-    done
+    find "$stage/lib" "$stage/libexec" -type f -print0 | xargs -0 readelf -h 2>/dev/null | sed -n 's/^File: //p'
 }
-needed() { readelf -d "$1" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p'; }
+# "<file><tab><soname>" for each NEEDED soname of each given file (at least two files, so that
+# readelf names them).
+needed() {
+    readelf -d "$@" | awk '/^File: / {file = substr($0, 7)}
+        /\(NEEDED\)/ {match($0, /\[.*\]/); print file "\t" substr($0, RSTART + 1, RLENGTH - 2)}'
+}
 
 # The programs go to libexec/osgGlyphs; bin/ gets a wrapper of each (share/package/program-wrapper.sh).
 mkdir -p "$stage/libexec/osgGlyphs"
@@ -73,37 +76,40 @@ done
 
 echo "make-package: the libraries they need, and run paths"
 # The closure: from every ELF file of the package along NEEDED, not into the excluded sonames.
-# ldd resolves the sonames as the build machine does.
+# A soname is where ld.so's cache says, else where ldd of the file that needs it finds it.
+case $(uname -m) in x86_64) ld_arch=x86-64 ;; aarch64) ld_arch=AArch64 ;; *) ld_arch= ;; esac
 declare -A location=()
 declare -A bundled=()
+while read -r soname flags path; do
+    if [[ -z ${location[$soname]:-} && $flags == *"$ld_arch"* ]]; then location[$soname]=$path; fi
+done < <(ldconfig -p | awk '$NF ~ /^\// {print $1, $2, $NF}')
+locate() { ldd "$1" | awk -v soname="$2" '$1 == soname && $3 ~ /^\// {print $3}'; }
 mapfile -t roots < <(elf_files)
-for file in "${roots[@]}"; do
-    while read -r soname path; do
-        [[ $path == /* ]] && location[$soname]=$path
-    done < <(ldd "$file" | awk '$2 == "=>" {print $1, $3}')
-done
-queue=("${roots[@]}")
+frontier=("${roots[@]}")
 missing=()
-while ((${#queue[@]})); do
-    file=${queue[0]}
-    queue=("${queue[@]:1}")
-    for soname in $(needed "$file"); do
+while ((${#frontier[@]})); do
+    ((${#frontier[@]} > 1)) || frontier+=("${frontier[0]}")
+    next=()
+    while IFS=$'\t' read -r file soname; do
         [[ $soname =~ $EXCLUDED || -n ${bundled[$soname]:-} || -e $stage/lib/$soname ]] && continue
-        path=${location[$soname]:-}
+        path=${location[$soname]:-$(locate "$file" "$soname")}
         [[ -n $path ]] || { missing+=("$soname (needed by ${file#$stage/})"); continue; }
         bundled[$soname]=$path
         cp -L "$path" "$stage/lib/$soname"
         chmod 644 "$stage/lib/$soname"
-        queue+=("$stage/lib/$soname")
-    done
+        next+=("$stage/lib/$soname")
+    done < <(needed "${frontier[@]}")
+    frontier=("${next[@]}")
 done
 if ((${#missing[@]})); then
     printf 'make-package: not found on this machine: %s\n' "${missing[@]}" >&2
     exit 1
 fi
 
+mapfile -t elves < <(elf_files)
+
 # Run paths relative to each file's place.
-for file in $(elf_files); do
+for file in "${elves[@]}"; do
     case $file in
     "$stage"/libexec/osgGlyphs/*) runpath='$ORIGIN/../../lib' ;;
     "$plugins"/*) runpath='$ORIGIN/..' ;;
@@ -122,20 +128,23 @@ else
     echo "make-package: no $font (fonts-dejavu-core): the legend falls back to OSG's built-in font"
 fi
 
-# What was bundled, from which Debian package, and the licences of those packages (one dpkg call:
-# each takes a third of a second).
+# What was bundled, from which Debian package (dpkg's file lists, both sides of the /usr merge:
+# dpkg -S takes seconds a library), and the licences of those packages.
 docs=$stage/share/doc/osgGlyphs
 mkdir -p "$docs/licenses"
 declare -A package_of=()
 mapfile -t sonames < <(printf '%s\n' "${!bundled[@]}" | sort)
-real_names=()
 for soname in "${sonames[@]}"; do
     real=$(readlink -f "${bundled[$soname]}")
-    real_names+=("*/$(basename "$(dirname "$real")")/$(basename "$real")")
-done
+    echo "$real"
+    echo "${real#/usr}"
+done > "$out/$name.paths"
 while IFS= read -r line; do
-    [[ $line == diversion* ]] || package_of[${line##*/}]=${line%%:*}
-done < <(dpkg -S "${real_names[@]}" 2>/dev/null || true)
+    list=${line%%.list:*}
+    package=${list##*/}
+    package_of[${line##*/}]=${package%%:*}
+done < <(grep -Fx -f "$out/$name.paths" /var/lib/dpkg/info/*.list 2>/dev/null || true)
+rm -f "$out/$name.paths"
 declare -A version_of=()
 while read -r package package_version; do
     version_of[$package]=$package_version
@@ -153,7 +162,7 @@ cp "$source_dir/share/package/env.sh" "$stage/env.sh"
 
 # The newest glibc and libstdc++ symbol versions any file of the package asks for.
 newest_version() {
-    elf_files | xargs readelf -V 2>/dev/null | grep -o "Name: $1_[0-9.]*" | sed "s/Name: $1_//" | sort -V | tail -1
+    readelf -V "${elves[@]}" 2>/dev/null | grep -o "Name: $1_[0-9.]*" | sed "s/Name: $1_//" | sort -V | tail -1
 }
 glibc=$(newest_version GLIBC)
 glibcxx=$(newest_version GLIBCXX)
@@ -164,7 +173,7 @@ sed -e "s/@VERSION@/$version/g" -e "s/@GLIBC@/$glibc/g" -e "s/@GLIBCXX@/$glibcxx
 for soname in $(ls "$stage/lib"); do
     if [[ $soname =~ $EXCLUDED ]]; then echo "make-package: $soname must not be bundled" >&2; exit 1; fi
 done
-for file in $(elf_files); do
+for file in "${elves[@]}"; do
     runpath=$(patchelf --print-rpath "$file")
     [[ $runpath == '$ORIGIN'* && $runpath != *:* ]] || { echo "make-package: run path '$runpath' in $file" >&2; exit 1; }
 done
