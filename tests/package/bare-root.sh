@@ -17,8 +17,14 @@ done
 mkdir -p "$work"
 root=$work/root
 
+# Nothing mounted in the root outlives a run, not even one cut short (debootstrap mounts /proc).
+release_root() { umount -l "$root/proc" 2>/dev/null || true; }
+trap release_root EXIT
+trap 'release_root; exit 143' TERM INT
+
 if [[ ! -e $root/.osgglyphs-ready ]]; then
-    rm -rf "$root"
+    release_root
+    rm -rf --one-file-system "$root"
     mirror=$(sed -n 's/^URIs: *//p; s/^deb \(http[^ ]*\) .*/\1/p' /etc/apt/sources.list.d/*.sources /etc/apt/sources.list 2>/dev/null | head -n 1 || true)
     mirror=${mirror:-http://deb.debian.org/debian}
     host=${mirror#*://} && host=${host%%/*}
@@ -42,7 +48,6 @@ cp "$source_dir/tests/data/formats/melt.lammpstrj" "$scratch/" && chmod a+r "$sc
 
 # A real system has /proc: the loader reads /proc/self/exe to expand the programs' $ORIGIN.
 mountpoint -q "$root/proc" || mount -t proc proc "$root/proc"
-trap 'umount "$root/proc" 2>/dev/null || true' EXIT
 as_user() { chroot --userspec=nobody:nogroup "$root" env -i PATH=/usr/bin:/bin HOME=/tmp/osgglyphs "$@"; }
 
 # Every packaged ELF file finds its libraries in the bare root.
