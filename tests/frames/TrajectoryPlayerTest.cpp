@@ -77,12 +77,12 @@ void expectAnalytic(const osgGlyphs::GlyphCloud& cloud, const PointData& rows, d
     }
 }
 
-/** Runs update() until the player shows count pictures more than before, at most a few seconds. */
+/** Runs update() until the player shows count pictures more than before; the wall clock only guards against a hang. */
 std::vector<double> playPictures(TrajectoryPlayer& player, std::size_t count, double& time)
 {
     std::vector<double> shown{player.getPosition()};
     const auto start = std::chrono::steady_clock::now();
-    while (shown.size() <= count && std::chrono::steady_clock::now() - start < std::chrono::seconds(20))
+    while (shown.size() <= count && std::chrono::steady_clock::now() - start < std::chrono::seconds(300))
     {
         time += 0.05;
         player.update(time);
@@ -222,7 +222,7 @@ TEST(FrameCache, TwoHundredFramesInABoundedBudget)
     cache->setPlayback(0, 1, false, 0, 199);
     const auto start = std::chrono::steady_clock::now();
     while (cache->getStatistics().decoded < 5 &&
-           std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
+           std::chrono::steady_clock::now() - start < std::chrono::seconds(300))
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     std::this_thread::sleep_for(std::chrono::milliseconds(50)); // it would go on past the budget now
     EXPECT_EQ(cache->getStatistics().decoded, 5u);
