@@ -452,9 +452,10 @@ def page():
     out = ["# Results", "",
            "<!-- Written by share/bench/results-page.py from the CSVs in share/bench/: edit those, and run it "
            "again. -->", "",
-           "The current figures of the committed benchmark runs. Every figure so far is Mesa's llvmpipe software "
-           "renderer's, on a shared virtual machine; on a GPU the ratios differ "
-           "([impostors](design/impostors.md#why-the-geometry-shader-is-the-default)). Frame times on such a "
+           "The current figures of the committed benchmark runs. No GPU has run the benchmarks yet: every "
+           "figure so far is Mesa's llvmpipe software renderer's "
+           "([headless-and-clusters.md](headless-and-clusters.md#gpu-figures)), and on a GPU the ratios differ "
+           "([impostors](design/impostors.md#why-the-geometry-shader-is-the-default)). Frame times on a shared "
            "machine swing by 20-50% from run to run: compare figures within one table. How to run the "
            "benchmarks: [user guide](user-guide.md#benchmarks).", "",
            "Figures measured by hand and kept in no CSV (the tile converter, viewing paged archives, "
