@@ -4,8 +4,8 @@
 
 #include "culling/DepthPyramid.h"
 #include "culling/GlyphChunks.h"
-#include "culling/RadixSort.h"
 #include "culling/ScreenCover.h"
+#include <osgGlyphsInternal/RadixSort.h>
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #include "TileTree.h"
 
-#include "../osgGlyphs/culling/RadixSort.h"
+#include <osgGlyphsInternal/RadixSort.h>
 
 #include <osgGlyphs/GlyphCulling>
 

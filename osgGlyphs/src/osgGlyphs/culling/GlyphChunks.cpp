@@ -1,5 +1,5 @@
 #include "GlyphChunks.h"
-#include "RadixSort.h"
+#include <osgGlyphsInternal/RadixSort.h>
 
 #include <algorithm>
 #include <cstdint>

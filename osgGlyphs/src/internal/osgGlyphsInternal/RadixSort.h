@@ -1,5 +1,6 @@
-/* osgGlyphs - private: a least-significant-digit radix sort by unsigned integer keys, shared by
- * the culling chunks and the tile builder's octree (a template: nothing to link). Not installed. */
+/* osgGlyphsInternal - private: a least-significant-digit radix sort by unsigned integer keys,
+ * shared by the culling chunks and the tile builder's octree (a template: nothing to link).
+ * Not installed. */
 
 #ifndef OSGGLYPHS_RADIXSORT_H
 #define OSGGLYPHS_RADIXSORT_H 1
