@@ -312,7 +312,7 @@ TEST(CullingRenderEdits, TheFrontToBackBinCullsItsCloudsTogether)
 // The culling record says where each glyph went: glyphs in chunks outside the view lie outside
 // it, glyphs in chunks found hidden lie behind the depth drawn at their centre, and the glyphs
 // sent to the GPU are the statistics' count. A cut-away of the cloud coloured by the record is
-// saved for the README (tests/output/culling_record*.png).
+// saved for docs/design/culling.md (tests/output/culling_record*.png).
 class CullingRecord : public ::testing::TestWithParam<float>
 {
 };
@@ -393,8 +393,8 @@ TEST_P(CullingRecord, SaysWhereEachGlyphWent)
     saveFrame(side.render(cutAway.get()), "culling_record");
 }
 
-// 0.4: the viewer's default, the README's picture; 0.3: gaps through which later rounds show, so
-// that a test too aggressive shows.
+// 0.4: the viewer's default, the picture of docs/design/culling.md; 0.3: gaps through which later rounds
+// show, so that a test too aggressive shows.
 INSTANTIATE_TEST_SUITE_P(Spacing, CullingRecord, ::testing::Values(0.4f, 0.3f),
                          [](const ::testing::TestParamInfo<float>& instance)
                          { return instance.param == 0.4f ? std::string("dense") : std::string("gaps"); });

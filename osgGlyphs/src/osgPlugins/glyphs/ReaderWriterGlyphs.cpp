@@ -149,7 +149,7 @@ osg::ref_ptr<osg::Node> createScene(const osgGlyphsData::PointDataset& dataset, 
 
 }
 
-/** Reads point data as glyphs; see the README for the option string.
+/** Reads point data as glyphs; the option string is in docs/user-guide.md ("Stock OSG tools").
  *
  * Once loaded, the plugin owns the extensions of the point formats: osgDB's Registry, after the
  * loaded plugins fail to read a file, loads the plugin named after its extension and takes what
