@@ -1,4 +1,5 @@
 #include "BenchDistributed.h"
+#include "BenchMeasurement.h"
 
 #include <osgGlyphsComposite/ImageCompositor>
 #include <osgGlyphsComposite/MPIShare>
@@ -32,19 +33,6 @@ double median(std::vector<double> values)
     return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
-/** The unit cube from a distance that fits its bounding sphere into the 30 degree field of view,
- * orbiting a degree a frame (as the single-process benchmark looks at it). */
-void placeCamera(osg::Camera& camera, unsigned int frame)
-{
-    const osg::Vec3d centre(0.5, 0.5, 0.5);
-    const double distance = 0.5 * std::sqrt(3.0) / std::sin(osg::DegreesToRadians(15.0));
-    const double azimuth = osg::DegreesToRadians(30.0 + frame);
-    const double elevation = osg::DegreesToRadians(20.0);
-    const osg::Vec3d direction(std::cos(elevation) * std::cos(azimuth),
-                               std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
-    camera.setViewMatrixAsLookAt(centre - direction * distance, centre, osg::Vec3d(0.0, 0.0, 1.0));
-}
-
 bool measure(const MPIShare& mpi, const BenchSettings& settings, osgGlyphs::GlyphShape shape,
              unsigned int count, Phases& result, std::string& error)
 {
@@ -72,7 +60,7 @@ bool measure(const MPIShare& mpi, const BenchSettings& settings, osgGlyphs::Glyp
     std::vector<double> render, readBack, wait, composite, writeBack, total;
     for (unsigned int frame = 0; frame <= settings.frames; ++frame)
     {
-        placeCamera(*viewer->getCamera(), frame);
+        placeBenchCamera(*viewer->getCamera(), frame);
         const auto start = std::chrono::steady_clock::now();
         viewer->frame();
         const double ms =

@@ -59,23 +59,9 @@ void applyScreenEffects(ScreenEffectsChoice choice, osgGlyphs::ScreenEffects& ef
     effects.setOutlines(choice == ScreenEffectsChoice::Outlines || choice == ScreenEffectsChoice::Both);
 }
 
-/** Looks at the unit cube's centre from a distance that fits its bounding sphere into the
- * viewer's 30 degree field of view, orbiting 1 degree per frame. */
-void placeCamera(osgGlyphsHeadless::OffscreenViewer& viewer, unsigned int frame)
-{
-    const osg::Vec3d centre(0.5, 0.5, 0.5);
-    const double distance = 0.5 * std::sqrt(3.0) / std::sin(osg::DegreesToRadians(15.0));
-    const double azimuth = osg::DegreesToRadians(30.0 + frame);
-    const double elevation = osg::DegreesToRadians(20.0);
-    const osg::Vec3d direction(std::cos(elevation) * std::cos(azimuth),
-                               std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
-    viewer.getCamera()->setViewMatrixAsLookAt(centre - direction * distance, centre,
-                                              osg::Vec3d(0.0, 0.0, 1.0));
-}
-
 double timeFrame(osgGlyphsHeadless::OffscreenViewer& viewer, unsigned int frame)
 {
-    placeCamera(viewer, frame);
+    placeBenchCamera(*viewer.getCamera(), frame);
     const auto start = std::chrono::steady_clock::now();
     viewer.frame();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -151,7 +137,7 @@ double measureOverdraw(osgGlyphsHeadless::OffscreenViewer& viewer, double covera
     osg::ref_ptr<FragmentCounter> begin = new FragmentCounter(true);
     camera->setPreDrawCallback(begin.get());
     camera->setPostDrawCallback(new FragmentCounter(false, begin.get()));
-    placeCamera(viewer, frame);
+    placeBenchCamera(*viewer.getCamera(), frame);
     viewer.frame();
     camera->setPreDrawCallback(nullptr);
     camera->setPostDrawCallback(nullptr);
@@ -287,4 +273,15 @@ void printFrameOverhead(const BenchSettings& settings)
         std::cout << "Empty frame (clear + colour read-back, " << settings.width << "x" << settings.height
                   << "): median " << formatMs(median(frameMs)) << " ms, with "
                   << viewer->getFrameCapture()->getGLRenderer() << std::endl;
+}
+
+void placeBenchCamera(osg::Camera& camera, unsigned int frame)
+{
+    const osg::Vec3d centre(0.5, 0.5, 0.5);
+    const double distance = 0.5 * std::sqrt(3.0) / std::sin(osg::DegreesToRadians(15.0));
+    const double azimuth = osg::DegreesToRadians(30.0 + frame);
+    const double elevation = osg::DegreesToRadians(20.0);
+    const osg::Vec3d direction(std::cos(elevation) * std::cos(azimuth),
+                               std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
+    camera.setViewMatrixAsLookAt(centre - direction * distance, centre, osg::Vec3d(0.0, 0.0, 1.0));
 }

@@ -7,7 +7,14 @@
 
 #include <osgGlyphs/GlyphTechnique>
 
+#include <osg/Camera>
+
 #include <string>
+
+/** Looks at the unit cube's centre from a distance that fits its bounding sphere into the 30 degree
+ * field of view, orbiting a degree a frame: the view of every benchmark frame, in one process or
+ * over MPI. */
+void placeBenchCamera(osg::Camera& camera, unsigned int frame);
 
 /** One case to measure: a technique drawing n glyphs of a shape. */
 struct BenchCase
