@@ -74,6 +74,10 @@ osg::ref_ptr<GlyphCloud> createCloud(const Recipe& recipe, int index)
     const float shift = 0.5f * static_cast<float>(index);
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
     cloud->setName(recipe.name);
+    // osg::Node's properties, which osgDB reads before the cloud's.
+    cloud->setNodeMask(0x00ff0f00u + static_cast<unsigned int>(index));
+    cloud->addDescription(std::string("fixture ") + recipe.name);
+    cloud->getOrCreateStateSet()->setRenderBinDetails(3 + index, "DepthSortedBin");
     cloud->setShape(recipe.shape);
     cloud->setTechnique(recipe.technique.get());
     // The single colour first: it drops per-glyph colours and scalars.
