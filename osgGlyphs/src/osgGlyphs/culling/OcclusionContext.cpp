@@ -8,7 +8,7 @@
 using namespace osgGlyphs::detail;
 
 OcclusionContext::OcclusionContext(unsigned int contextID)
-    : osg::GraphicsObjectManager("osgGlyphs::OcclusionContext", contextID), _image(new osg::Image),
+    : ContextRelease("osgGlyphs::OcclusionContext", contextID), _image(new osg::Image),
       _texture(new osg::Texture2D)
 {
     _texture->setImage(_image.get());
@@ -105,7 +105,7 @@ int OcclusionContext::applyPyramidTexture(osg::State& state)
     return levels;
 }
 
-void OcclusionContext::release()
+void OcclusionContext::releaseContext()
 {
     osg::ref_ptr<osg::State> state = new osg::State;
     state->setContextID(getContextID());

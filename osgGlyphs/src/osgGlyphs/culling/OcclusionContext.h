@@ -3,6 +3,7 @@
 #ifndef OSGGLYPHS_OCCLUSIONCONTEXT_H
 #define OSGGLYPHS_OCCLUSIONCONTEXT_H 1
 
+#include "../state/ContextRelease.h"
 #include "BinRounds.h"
 #include "DepthPyramid.h"
 
@@ -29,7 +30,7 @@ const int MAX_PYRAMID_TEXTURE_LEVELS = 16;
  * the pyramid's levels from level 1 up (llvmpipe fetches wrong texels when the lanes of one
  * texelFetch ask for different mipmap levels). Lives in the context's osg::ContextData (osg::get<>), so only
  * the context's draw thread uses it, and releases its texture when OSG deletes the context's objects. */
-class OcclusionContext : public osg::GraphicsObjectManager
+class OcclusionContext : public ContextRelease
 {
 public:
     explicit OcclusionContext(unsigned int contextID);
@@ -62,13 +63,8 @@ public:
     int applyPyramidTexture(osg::State& state);
     const std::vector<GLint>& getAtlasLevels() const { return _atlasLevels; }
 
-    void flushDeletedGLObjects(double, double&) override {}
-    void flushAllDeletedGLObjects() override {}
-    void deleteAllGLObjects() override { release(); }
-    void discardAllGLObjects() override { release(); }
-
 protected:
-    void release();
+    void releaseContext() override;
 
     DepthPyramid _pyramid;
     BinRounds* _binRounds = nullptr;

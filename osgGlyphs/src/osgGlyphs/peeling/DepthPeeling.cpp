@@ -1,6 +1,7 @@
 #include <osgGlyphs/DepthPeeling>
 #include <osgGlyphs/GlyphStateCache>
 
+#include "../state/ContextRelease.h"
 #include "../state/ViewState.h"
 #include "PeelingPasses.h"
 
@@ -47,20 +48,16 @@ ContextPasses& contextPasses()
 
 /** Releases a context's passes, and forgets them, when OSG deletes or discards that context's
  * GL objects: a later context may reuse the ID. */
-class PassesObserver : public osg::GraphicsObjectManager
+class PassesObserver : public detail::ContextRelease
 {
 public:
     explicit PassesObserver(unsigned int contextID)
-        : osg::GraphicsObjectManager("osgGlyphs::DepthPeeling passes", contextID)
+        : detail::ContextRelease("osgGlyphs::DepthPeeling passes", contextID)
     {
     }
-    void flushDeletedGLObjects(double, double&) override {}
-    void flushAllDeletedGLObjects() override {}
-    void deleteAllGLObjects() override { forget(); }
-    void discardAllGLObjects() override { forget(); }
 
-private:
-    void forget()
+protected:
+    void releaseContext() override
     {
         osg::ref_ptr<detail::PeelingPasses> passes;
         {

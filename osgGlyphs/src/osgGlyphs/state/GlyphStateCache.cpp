@@ -3,6 +3,7 @@
 #include <osgGlyphs/GlyphCloud>
 
 #include "../culling/OcclusionContext.h"
+#include "ContextRelease.h"
 #include "GlyphDefines.h"
 #include "GlyphProgram.h"
 
@@ -24,23 +25,18 @@ std::atomic<unsigned int> s_contextReleases{0};
 /** Lives in a context's osg::ContextData: when OSG deletes or discards that context's GL
  * objects, it releases the shared glyph state of that context, which no scene graph under
  * the context's cameras may reach any more (a later context could reuse the ID). */
-class GlyphContextObserver : public osg::GraphicsObjectManager
+class GlyphContextObserver : public detail::ContextRelease
 {
 public:
     explicit GlyphContextObserver(unsigned int contextID)
-        : osg::GraphicsObjectManager("osgGlyphs::GlyphContextObserver", contextID)
+        : detail::ContextRelease("osgGlyphs::GlyphContextObserver", contextID)
     {
     }
-    void flushDeletedGLObjects(double, double&) override {}
-    void flushAllDeletedGLObjects() override {}
-    void deleteAllGLObjects() override { release(); }
-    void discardAllGLObjects() override { release(); }
 
 protected:
     ~GlyphContextObserver() override { ++s_contextReleases; }
 
-private:
-    void release()
+    void releaseContext() override
     {
         osg::ref_ptr<osg::State> state = new osg::State;
         state->setContextID(getContextID());
