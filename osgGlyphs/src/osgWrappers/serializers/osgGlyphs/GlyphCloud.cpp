@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <string>
 #include <vector>
 
 using osgGlyphs::GlyphCloud;
@@ -19,24 +20,51 @@ static std::ostream& exactFloats(std::ostream& out)
     return out;
 }
 
-// Enumerations are written by the names the viewer and the benchmark use ("cone", "polygons").
+/** An enumerated property of the cloud, written by the name the viewer and the benchmark use
+ * ("cone", "frustum"): its parse and name functions, accessors, and the word for it in errors. */
+template <class Enum>
+struct NamedEnum
+{
+    const char* what;
+    bool (*parse)(const std::string&, Enum&);
+    const char* (*name)(Enum);
+    Enum (GlyphCloud::*get)() const;
+    void (GlyphCloud::*set)(Enum);
+};
 
-static bool checkShape(const GlyphCloud&)
+static const NamedEnum<osgGlyphs::GlyphShape> shapeNames = {
+    "shape", &osgGlyphs::parseShape, &osgGlyphs::getShapeName, &GlyphCloud::getShape, &GlyphCloud::setShape};
+static const NamedEnum<osgGlyphs::GlyphAnchor> anchorNames = {"anchor", &osgGlyphs::parseAnchor,
+                                                              &osgGlyphs::getAnchorName,
+                                                              &GlyphCloud::getAnchor, &GlyphCloud::setAnchor};
+static const NamedEnum<osgGlyphs::GlyphCulling> cullingNames = {
+    "culling", &osgGlyphs::parseCulling, &osgGlyphs::getCullingName, &GlyphCloud::getCulling,
+    &GlyphCloud::setCulling};
+
+static bool alwaysWritten(const GlyphCloud&)
 {
     return true;
 }
 
-static bool readShape(osgDB::InputStream& is, GlyphCloud& cloud)
+template <const auto& names>
+static bool readByName(osgDB::InputStream& is, GlyphCloud& cloud)
 {
     std::string name;
     is >> name;
-    osgGlyphs::GlyphShape shape;
-    if (!osgGlyphs::parseShape(name, shape))
+    auto value = (cloud.*names.get)();
+    if (!names.parse(name, value))
     {
-        is.throwException("osgGlyphs::GlyphCloud: unknown shape \"" + name + "\"");
+        is.throwException(std::string("osgGlyphs::GlyphCloud: unknown ") + names.what + " \"" + name + "\"");
         return false;
     }
-    cloud.setShape(shape);
+    (cloud.*names.set)(value);
+    return true;
+}
+
+template <const auto& names>
+static bool writeByName(osgDB::OutputStream& os, const GlyphCloud& cloud)
+{
+    os << std::string(names.name((cloud.*names.get)())) << std::endl;
     return true;
 }
 
@@ -45,33 +73,16 @@ static bool writeShape(osgDB::OutputStream& os, const GlyphCloud& cloud)
     // Shape is the cloud's first property. Text streams write floats with 6 significant digits
     // by default; from here on they get enough digits for every float to read back exactly.
     os << exactFloats;
-    os << std::string(osgGlyphs::getShapeName(cloud.getShape())) << std::endl;
-    return true;
+    return writeByName<shapeNames>(os, cloud);
 }
 
-static bool checkAnchor(const GlyphCloud&)
+template <const auto& names>
+static void addNamedEnumSerializer(osgDB::ObjectWrapper* wrapper, const char* property,
+                                   osgDB::UserSerializer<GlyphCloud>::Writer writer = &writeByName<names>)
 {
-    return true;
-}
-
-static bool readAnchor(osgDB::InputStream& is, GlyphCloud& cloud)
-{
-    std::string name;
-    is >> name;
-    osgGlyphs::GlyphAnchor anchor;
-    if (!osgGlyphs::parseAnchor(name, anchor))
-    {
-        is.throwException("osgGlyphs::GlyphCloud: unknown anchor \"" + name + "\"");
-        return false;
-    }
-    cloud.setAnchor(anchor);
-    return true;
-}
-
-static bool writeAnchor(osgDB::OutputStream& os, const GlyphCloud& cloud)
-{
-    os << std::string(osgGlyphs::getAnchorName(cloud.getAnchor())) << std::endl;
-    return true;
+    wrapper->addSerializer(
+        new osgDB::UserSerializer<GlyphCloud>(property, &alwaysWritten, &readByName<names>, writer),
+        osgDB::BaseSerializer::RW_USER);
 }
 
 // Positions and scalars keep the format of object serializers (a flag, then the array; in text
@@ -313,31 +324,6 @@ static bool writeArrowHead(osgDB::OutputStream& os, const GlyphCloud& cloud)
     return true;
 }
 
-static bool checkCulling(const GlyphCloud&)
-{
-    return true;
-}
-
-static bool readCulling(osgDB::InputStream& is, GlyphCloud& cloud)
-{
-    std::string name;
-    is >> name;
-    osgGlyphs::GlyphCulling culling;
-    if (!osgGlyphs::parseCulling(name, culling))
-    {
-        is.throwException("osgGlyphs::GlyphCloud: unknown culling \"" + name + "\"");
-        return false;
-    }
-    cloud.setCulling(culling);
-    return true;
-}
-
-static bool writeCulling(osgDB::OutputStream& os, const GlyphCloud& cloud)
-{
-    os << std::string(osgGlyphs::getCullingName(cloud.getCulling())) << std::endl;
-    return true;
-}
-
 /** Computes a cloud's bounds once it is read. Nothing else may before cull threads share it: the
  * PagedLODs of a tile archive have user-defined centres, so neither osgDB's DatabasePager nor a
  * viewer's home position computes the bounds of the clouds below them, and the cull threads of
@@ -357,7 +343,7 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
                         "osg::Object osg::Node osg::Drawable osgGlyphs::GlyphCloud")
 {
     wrapper->addFinishedObjectReadCallback(new ComputeBoundsOnRead);
-    ADD_USER_SERIALIZER(Shape);
+    addNamedEnumSerializer<shapeNames>(wrapper, "Shape", &writeShape);
     // The single colour comes before the arrays: setting it later would drop per-glyph colours.
     ADD_VEC4_SERIALIZER(Color, osg::Vec4(0.8f, 0.8f, 0.8f, 1.0f));
     ADD_OBJECT_SERIALIZER(Technique, osgGlyphs::GlyphTechnique, NULL);
@@ -373,15 +359,16 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
     ADD_USER_SERIALIZER(Material);
     ADD_FLOAT_SERIALIZER(LengthScale, 1.0f);
     ADD_BOOL_SERIALIZER(UniformLength, false);
-    ADD_USER_SERIALIZER(Anchor);
+    addNamedEnumSerializer<anchorNames>(wrapper, "Anchor");
     ADD_USER_SERIALIZER(ArrowHead);
     ADD_BOOL_SERIALIZER(CompressedAttributes, true);
     // Added after the first release of the format: text files without them read as before.
     ADD_VEC3D_SERIALIZER(Origin, osg::Vec3d());
-    ADD_USER_SERIALIZER(Culling);
+    addNamedEnumSerializer<cullingNames>(wrapper, "Culling");
     ADD_UINT_SERIALIZER(CullingChunkSize, 512u);
     ADD_OBJECT_SERIALIZER(Occlusion, osg::Vec4ubArray, NULL);
     ADD_FLOAT_SERIALIZER(Opacity, 1.0f);
     ADD_BOOL_SERIALIZER(CompressedPositions, false);
     ADD_USER_SERIALIZER(ScalarSteps);
 }
+
