@@ -35,8 +35,8 @@ static bool writeColors(osgDB::OutputStream& os, const osgGlyphs::ColorMap& map)
     return true;
 }
 
-REGISTER_OBJECT_WRAPPER(osgGlyphs_ColorMap, new osgGlyphs::ColorMap, osgGlyphs::ColorMap,
-                        "osg::Object osgGlyphs::ColorMap")
+REGISTER_CUSTOM_OBJECT_WRAPPER(osgGlyphs, osgGlyphs_ColorMap, new osgGlyphs::ColorMap, osgGlyphs::ColorMap,
+                               "osg::Object osgGlyphs::ColorMap")
 {
     ADD_USER_SERIALIZER(Colors);
 }

@@ -2,8 +2,9 @@
 
 #include <osgDB/ObjectWrapper>
 
-REGISTER_OBJECT_WRAPPER(osgGlyphs_DepthPeeling, new osgGlyphs::DepthPeeling, osgGlyphs::DepthPeeling,
-                        "osg::Object osg::Node osg::Group osgGlyphs::DepthPeeling")
+REGISTER_CUSTOM_OBJECT_WRAPPER(osgGlyphs, osgGlyphs_DepthPeeling, new osgGlyphs::DepthPeeling,
+                               osgGlyphs::DepthPeeling,
+                               "osg::Object osg::Node osg::Group osgGlyphs::DepthPeeling")
 {
     ADD_UINT_SERIALIZER(NumLayers, osgGlyphs::DepthPeeling::DEFAULT_NUM_LAYERS);
     ADD_BOOL_SERIALIZER(Enabled, true);

@@ -4,6 +4,7 @@
 #include <osgDB/InputStream>
 #include <osgDB/ObjectWrapper>
 #include <osgDB/OutputStream>
+#include <osgDB/Registry>
 
 #include <algorithm>
 #include <cmath>
@@ -338,9 +339,12 @@ struct ComputeBoundsOnRead : public osgDB::FinishedObjectReadCallback
 
 // osg::Geometry is left out of the chain: its arrays and primitive sets are derived from the
 // cloud's own, which are written here. The technique is an object with a wrapper of its own
-// (Techniques.cpp; osgdb_serializers_osgglyphspaper for the paper's).
-REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyphs::GlyphCloud,
-                        "osg::Object osg::Node osg::Drawable osgGlyphs::GlyphCloud")
+// (Techniques.cpp; osgdb_serializers_osgglyphspaper for the paper's). Every property is in every
+// version of the osgGlyphs domain (DomainVersion.h): a new one goes last, after
+// UPDATE_TO_VERSION_SCOPED(2).
+REGISTER_CUSTOM_OBJECT_WRAPPER(osgGlyphs, osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud,
+                               osgGlyphs::GlyphCloud,
+                               "osg::Object osg::Node osg::Drawable osgGlyphs::GlyphCloud")
 {
     wrapper->addFinishedObjectReadCallback(new ComputeBoundsOnRead);
     addNamedEnumSerializer<shapeNames>(wrapper, "Shape", &writeShape);
@@ -362,7 +366,8 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
     addNamedEnumSerializer<anchorNames>(wrapper, "Anchor");
     ADD_USER_SERIALIZER(ArrowHead);
     ADD_BOOL_SERIALIZER(CompressedAttributes, true);
-    // Added after the first release of the format: text files without them read as before.
+    // Appended after the first files were written, before the domain: text files without them
+    // read as before, binary ones without them do not.
     ADD_VEC3D_SERIALIZER(Origin, osg::Vec3d());
     addNamedEnumSerializer<cullingNames>(wrapper, "Culling");
     ADD_UINT_SERIALIZER(CullingChunkSize, 512u);
@@ -372,3 +377,15 @@ REGISTER_OBJECT_WRAPPER(osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud, osgGlyp
     ADD_USER_SERIALIZER(ScalarSteps);
 }
 
+// osgDB narrows a wrapper's associates to the versions their own wrappers give them, in OSG's numbers
+// (osg::Drawable's adds osg::Node from 154), and compares them with the version of the class's own
+// domain: in the osgGlyphs domain that would skip osg::Node's properties, which every file holds.
+// Narrowed here once, before osgDB would, then osg::Node is put back in every version.
+static const bool nodeInEveryVersion = []
+{
+    osgDB::ObjectWrapper* wrapper =
+        osgDB::Registry::instance()->getObjectWrapperManager()->findWrapper("osgGlyphs::GlyphCloud");
+    wrapper->setupAssociatesRevisionsInheritanceIfRequired();
+    wrapper->markAssociateAsAdded("osg::Node");
+    return true;
+}();

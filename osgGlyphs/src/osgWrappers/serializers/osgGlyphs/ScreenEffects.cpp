@@ -2,8 +2,9 @@
 
 #include <osgDB/ObjectWrapper>
 
-REGISTER_OBJECT_WRAPPER(osgGlyphs_ScreenEffects, new osgGlyphs::ScreenEffects, osgGlyphs::ScreenEffects,
-                        "osg::Object osg::Node osg::Group osgGlyphs::ScreenEffects")
+REGISTER_CUSTOM_OBJECT_WRAPPER(osgGlyphs, osgGlyphs_ScreenEffects, new osgGlyphs::ScreenEffects,
+                               osgGlyphs::ScreenEffects,
+                               "osg::Object osg::Node osg::Group osgGlyphs::ScreenEffects")
 {
     ADD_BOOL_SERIALIZER(AmbientOcclusion, false);
     ADD_FLOAT_SERIALIZER(OcclusionRadius, 0.0f);

@@ -27,9 +27,9 @@ static bool writeResolution(osgDB::OutputStream& os, const PolygonsTechnique& te
 
 namespace WrapPolygonsTechnique
 {
-REGISTER_OBJECT_WRAPPER(osgGlyphsPaper_PolygonsTechnique, new osgGlyphsPaper::PolygonsTechnique,
-                        osgGlyphsPaper::PolygonsTechnique,
-                        "osg::Object osgGlyphs::GlyphTechnique osgGlyphsPaper::PolygonsTechnique")
+REGISTER_CUSTOM_OBJECT_WRAPPER(osgGlyphs, osgGlyphsPaper_PolygonsTechnique,
+                               new osgGlyphsPaper::PolygonsTechnique, osgGlyphsPaper::PolygonsTechnique,
+                               "osg::Object osgGlyphs::GlyphTechnique osgGlyphsPaper::PolygonsTechnique")
 {
     ADD_USER_SERIALIZER(Resolution);
 }
@@ -40,9 +40,9 @@ REGISTER_OBJECT_WRAPPER(osgGlyphsPaper_PolygonsTechnique, new osgGlyphsPaper::Po
 #define OSGGLYPHSPAPER_WRAPPER(ClassName)                                                                    \
     namespace Wrap##ClassName                                                                                \
     {                                                                                                        \
-        REGISTER_OBJECT_WRAPPER(osgGlyphsPaper_##ClassName, new osgGlyphsPaper::ClassName,                   \
-                                osgGlyphsPaper::ClassName,                                                   \
-                                "osg::Object osgGlyphs::GlyphTechnique osgGlyphsPaper::" #ClassName)         \
+        REGISTER_CUSTOM_OBJECT_WRAPPER(osgGlyphs, osgGlyphsPaper_##ClassName, new osgGlyphsPaper::ClassName, \
+                                       osgGlyphsPaper::ClassName,                                            \
+                                       "osg::Object osgGlyphs::GlyphTechnique osgGlyphsPaper::" #ClassName)  \
         {                                                                                                    \
         }                                                                                                    \
     }

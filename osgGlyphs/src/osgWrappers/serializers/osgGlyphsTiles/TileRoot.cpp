@@ -61,8 +61,9 @@ static bool writeGlyphBudget(osgDB::OutputStream& os, const TileRoot& root)
     return true;
 }
 
-REGISTER_OBJECT_WRAPPER(osgGlyphsTiles_TileRoot, new osgGlyphsTiles::TileRoot, osgGlyphsTiles::TileRoot,
-                        "osg::Object osg::Node osg::Group osgGlyphsTiles::TileRoot")
+REGISTER_CUSTOM_OBJECT_WRAPPER(osgGlyphs, osgGlyphsTiles_TileRoot, new osgGlyphsTiles::TileRoot,
+                               osgGlyphsTiles::TileRoot,
+                               "osg::Object osg::Node osg::Group osgGlyphsTiles::TileRoot")
 {
     ADD_USER_SERIALIZER(GlyphBudget);
 }
