@@ -227,13 +227,14 @@ void expectTheFixtureEffects(const osg::Node* read)
     EXPECT_EQ(peeling->getMethod(), osgGlyphs::DepthPeeling::PEEL_PASSES);
 }
 
-/** The budget of the fixture's TileRoot; text keeps it to 6 digits, as the wrapper writes doubles. */
-void expectTheFixtureTileRoot(const osg::Node* read, bool text)
+/** The fixture's TileRoot. Text files written before the domain hold its budget to 6 significant
+ * digits (sixDigits), as the wrapper wrote doubles then. */
+void expectTheFixtureTileRoot(const osg::Node* read, bool sixDigits)
 {
     const auto* root = dynamic_cast<const osgGlyphsTiles::TileRoot*>(read);
     ASSERT_NE(root, nullptr);
     EXPECT_EQ(root->getName(), "tile-root");
-    EXPECT_EQ(root->getGlyphBudget(), text ? 123457000000ull : 123456789012ull);
+    EXPECT_EQ(root->getGlyphBudget(), sixDigits ? 123457000000ull : 123456789012ull);
 }
 
 class FilesBeforeTheDomain : public ::testing::TestWithParam<std::string>
@@ -298,13 +299,14 @@ TEST_P(FilesBeforeTheDomain, TileRootReadsWithItsBudget)
     expectTheFixtureTileRoot(osgDB::readRefNodeFile(fixture("tileroot")).get(), GetParam() == "osgt");
 }
 
-// Written without asking for a version, files are the old ones byte for byte.
+// Written without asking for a version, files are the old ones byte for byte; but for a TileRoot in
+// text, whose budget is now written whole.
 TEST_P(FilesBeforeTheDomain, AreWhatTodaysCodeWritesWithoutAVersion)
 {
-    const std::map<std::string, osg::ref_ptr<osg::Node>> scenes = {
-        {"clouds", osgGlyphsFixtures::createClouds()},
-        {"effects", osgGlyphsFixtures::createEffects()},
-        {"tileroot", osgGlyphsFixtures::createTileRoot()}};
+    std::map<std::string, osg::ref_ptr<osg::Node>> scenes = {{"clouds", osgGlyphsFixtures::createClouds()},
+                                                             {"effects", osgGlyphsFixtures::createEffects()}};
+    if (GetParam() == "osgb")
+        scenes["tileroot"] = osgGlyphsFixtures::createTileRoot();
     for (const auto& [name, scene] : scenes)
     {
         const std::string path = osgGlyphsTest::outputPath("unversioned_" + name + "." + GetParam());
@@ -348,8 +350,7 @@ TEST_P(FilesInTheDomain, DeclareTheDomainVersionAndReadBack)
         writeAndRead(*osgGlyphsFixtures::createEffects(), "versioned_effects", version).get());
     EXPECT_EQ(declaredDomains(_path), declared) << _path;
     expectTheFixtureTileRoot(
-        writeAndRead(*osgGlyphsFixtures::createTileRoot(), "versioned_tileroot", version).get(),
-        GetParam() == "osgt");
+        writeAndRead(*osgGlyphsFixtures::createTileRoot(), "versioned_tileroot", version).get(), false);
     EXPECT_EQ(declaredDomains(_path), declared) << _path;
 }
 
@@ -436,6 +437,18 @@ TEST_P(FilesInTheDomain, AFileOfALaterVersionReadsAsFarAsThisCodeKnows)
 
 INSTANTIATE_TEST_SUITE_P(, FilesInTheDomain, ::testing::Values("osgt", "osgb"),
                          [](const ::testing::TestParamInfo<std::string>& param) { return param.param; });
+
+// A glyph budget beyond 32 bits, and beyond the 6 digits text streams give doubles, reads back
+// whole from every format.
+TEST(TileRootBudget, ReadsBackWholeFromEveryFormat)
+{
+    for (const char* format : {"osgt", "osgb", "osgx"})
+    {
+        const std::string path = osgGlyphsTest::outputPath(std::string("budget.") + format);
+        ASSERT_TRUE(osgDB::writeNodeFile(*osgGlyphsFixtures::createTileRoot(), path)) << path;
+        expectTheFixtureTileRoot(osgDB::readRefNodeFile(path).get(), false);
+    }
+}
 
 // The archive osgglyphconvert wrote before the domain: its root is a TileRoot with the budget it
 // was given, and every tile reads with the glyphs its checksum was made of.

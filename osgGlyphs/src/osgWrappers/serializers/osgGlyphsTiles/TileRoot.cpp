@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
 
 using osgGlyphsTiles::TileRoot;
 
@@ -57,7 +58,13 @@ static bool readGlyphBudget(osgDB::InputStream& is, TileRoot& root)
 
 static bool writeGlyphBudget(osgDB::OutputStream& os, const TileRoot& root)
 {
-    os << static_cast<double>(root.getGlyphBudget()) << std::endl;
+    // Text streams write doubles with 6 significant digits: there the budget goes as its whole
+    // digits, which the reader above (and every earlier one) reads as the same double.
+    if (os.isBinary())
+        os << static_cast<double>(root.getGlyphBudget());
+    else
+        os << std::to_string(root.getGlyphBudget());
+    os << std::endl;
     return true;
 }
 
