@@ -151,10 +151,9 @@ osg::ref_ptr<osg::Group> createClouds()
     return clouds;
 }
 
-osg::ref_ptr<osg::Group> createEffects()
+osg::ref_ptr<osgGlyphs::ScreenEffects> createScreenEffects()
 {
     osg::ref_ptr<osgGlyphs::ScreenEffects> effects = new osgGlyphs::ScreenEffects;
-    effects->setName("effects");
     effects->setAmbientOcclusion(true);
     effects->setOcclusionRadius(0.3f);
     effects->setOcclusionStrength(0.7f);
@@ -162,11 +161,24 @@ osg::ref_ptr<osg::Group> createEffects()
     effects->setOutlines(true);
     effects->setOutlineWidth(2.5f);
     effects->setOutlineColor(osg::Vec4(0.2f, 0.0f, 0.1f, 0.9f));
+    return effects;
+}
+
+osg::ref_ptr<osgGlyphs::DepthPeeling> createDepthPeeling()
+{
     osg::ref_ptr<osgGlyphs::DepthPeeling> peeling = new osgGlyphs::DepthPeeling;
-    peeling->setName("peeling");
     peeling->setNumLayers(3);
-    peeling->setEnabled(false);
     peeling->setMethod(osgGlyphs::DepthPeeling::PEEL_PASSES);
+    return peeling;
+}
+
+osg::ref_ptr<osg::Group> createEffects()
+{
+    osg::ref_ptr<osgGlyphs::ScreenEffects> effects = createScreenEffects();
+    effects->setName("effects");
+    osg::ref_ptr<osgGlyphs::DepthPeeling> peeling = createDepthPeeling();
+    peeling->setName("peeling");
+    peeling->setEnabled(false);
     effects->addChild(peeling.get());
     return effects;
 }

@@ -5,7 +5,9 @@
 #ifndef OSGGLYPHS_TESTS_SERIALIZERFIXTURES_H
 #define OSGGLYPHS_TESTS_SERIALIZERFIXTURES_H
 
+#include <osgGlyphs/DepthPeeling>
 #include <osgGlyphs/GlyphCloud>
+#include <osgGlyphs/ScreenEffects>
 #include <osgGlyphsTiles/TileRoot>
 
 #include <osg/Group>
@@ -20,7 +22,14 @@ namespace osgGlyphsFixtures
  * 16-bit steps, and RGBA colours. */
 osg::ref_ptr<osg::Group> createClouds();
 
-/** A ScreenEffects above a DepthPeeling, every setting of both off its default. */
+/** A ScreenEffects with every setting off its default, and no children. */
+osg::ref_ptr<osgGlyphs::ScreenEffects> createScreenEffects();
+
+/** A DepthPeeling of 3 layers peeled in passes, enabled. */
+osg::ref_ptr<osgGlyphs::DepthPeeling> createDepthPeeling();
+
+/** createScreenEffects() above createDepthPeeling() disabled: every setting of both off its
+ * default. */
 osg::ref_ptr<osg::Group> createEffects();
 
 /** A TileRoot with a glyph budget beyond 32 bits. */

@@ -2,6 +2,8 @@
 // survives .osgt, .osgb and .osgx bit for bit, and the read scene renders the same pixels.
 
 #include "GlyphTestScenes.h"
+#include "SameBits.h"
+#include "SerializerFixtures.h"
 
 #include <osgGlyphs/DepthPeeling>
 #include <osgGlyphs/GlyphCloud>
@@ -53,15 +55,6 @@ osg::ref_ptr<GlyphCloud> createFullCloud()
     polygons->setResolution(12, 6);
     cloud->setTechnique(polygons.get());
     return cloud;
-}
-
-template <class ArrayType>
-bool sameBits(const ArrayType* a, const ArrayType* b)
-{
-    if (!a || !b)
-        return a == b;
-    return a->size() == b->size() &&
-           std::memcmp(a->getDataPointer(), b->getDataPointer(), a->getTotalDataSize()) == 0;
 }
 
 void expectSameCloud(const GlyphCloud& a, const GlyphCloud& b)
@@ -178,18 +171,9 @@ osg::ref_ptr<osg::Geode> sphereCloud(float x, float opacity)
 TEST_P(NativeFormats, ScreenEffectsAndDepthPeelingRoundTrip)
 {
     // Outlined, occluded opaque spheres on the left; transparent ones peeled on the right.
-    osg::ref_ptr<osgGlyphs::ScreenEffects> effects = new osgGlyphs::ScreenEffects;
-    effects->setAmbientOcclusion(true);
-    effects->setOcclusionRadius(0.3f);
-    effects->setOcclusionStrength(0.7f);
-    effects->setOcclusionSamples(24);
-    effects->setOutlines(true);
-    effects->setOutlineWidth(2.5f);
-    effects->setOutlineColor(osg::Vec4(0.2f, 0.0f, 0.1f, 0.9f));
+    osg::ref_ptr<osgGlyphs::ScreenEffects> effects = osgGlyphsFixtures::createScreenEffects();
     effects->addChild(sphereCloud(-0.7f, 1.0f).get());
-    osg::ref_ptr<osgGlyphs::DepthPeeling> peeling = new osgGlyphs::DepthPeeling;
-    peeling->setNumLayers(3);
-    peeling->setMethod(osgGlyphs::DepthPeeling::PEEL_PASSES);
+    osg::ref_ptr<osgGlyphs::DepthPeeling> peeling = osgGlyphsFixtures::createDepthPeeling();
     peeling->addChild(sphereCloud(0.7f, 0.5f).get());
     osg::ref_ptr<osg::Group> scene = new osg::Group;
     scene->addChild(effects.get());

@@ -5,6 +5,7 @@
 
 #include "DomainVersion.h"
 #include "RenderHarness.h"
+#include "SameBits.h"
 #include "SerializerFixtures.h"
 
 #include <osgGlyphs/ColorMap>
@@ -91,15 +92,6 @@ osg::ref_ptr<osgDB::Options> optionsForVersion(int version)
     osg::ref_ptr<osgDB::Options> options = new osgDB::Options;
     options->setPluginStringData("CustomDomains", osgGlyphsWrappers::domainVersionEntry(version));
     return options;
-}
-
-template <class ArrayType>
-bool sameBits(const ArrayType* a, const ArrayType* b)
-{
-    if (!a || !b)
-        return a == b;
-    return a->size() == b->size() &&
-           std::memcmp(a->getDataPointer(), b->getDataPointer(), a->getTotalDataSize()) == 0;
 }
 
 void expectSameTechnique(const GlyphCloud& read, const GlyphCloud& built)
