@@ -77,7 +77,8 @@ void expectAnalytic(const osgGlyphs::GlyphCloud& cloud, const PointData& rows, d
     }
 }
 
-/** Runs update() until the player shows count pictures more than before; the wall clock only guards against a hang. */
+/** Runs update() until the player shows count pictures more than before; the wall clock only
+ * guards against a hang. */
 std::vector<double> playPictures(TrajectoryPlayer& player, std::size_t count, double& time)
 {
     std::vector<double> shown{player.getPosition()};
