@@ -1,5 +1,6 @@
 #include "BinRounds.h"
 #include "ChunkDrawer.h"
+#include "CullingRounds.h"
 #include "OcclusionContext.h"
 #include "ScreenCover.h"
 
@@ -35,6 +36,58 @@ void render(osgUtil::RenderLeaf* leaf, osg::RenderInfo& renderInfo, osgUtil::Ren
     leaf->render(renderInfo, previous);
     previous = leaf;
 }
+
+/** The bin's rounds: each sets what every cloud is to draw in it (CloudRound) and renders the
+ * clouds' leaves, whose draws find it through the context (OcclusionContext::findBinRound). */
+class BinCloudRounds : public CullingRounds
+{
+public:
+    BinCloudRounds(osg::RenderInfo& renderInfo, osgUtil::RenderLeaf*& previous,
+                   std::vector<PlannedCloud>& clouds, const std::vector<BinChunk>& where)
+        : _renderInfo(renderInfo), _previous(previous), _clouds(clouds), _where(where)
+    {
+    }
+
+protected:
+    void depthRead(bool) override { ++_unclaimedReads; }
+
+    void choose(unsigned int, const ChunkInView& chunk, bool hidden) override
+    {
+        if (!hidden)
+            _clouds[_where[chunk.chunk].cloud].round->chunks.push_back(_where[chunk.chunk].chunk);
+    }
+
+    unsigned int draw(unsigned int round, bool testing) override
+    {
+        unsigned int drawn = 0;
+        for (PlannedCloud& cloud : _clouds)
+        {
+            CloudRound& planned = *cloud.round;
+            planned.round = round;
+            planned.testing = testing;
+            // Every cloud draws in the first round (its first draw in the frame), the others only
+            // where it has chunks to draw.
+            if (round == 0 || (!planned.drewAll && !planned.chunks.empty()))
+            {
+                planned.depthReadbacks = _unclaimedReads; // counted by the next cloud drawn
+                _unclaimedReads = 0;
+                render(cloud.leaf, _renderInfo, _previous);
+                // What it drew: the round's chunks, or all in view where it could not be culled.
+                for (unsigned int chunk : planned.chunks)
+                    drawn += cloud.chunks->chunks[chunk].count;
+            }
+            planned.chunks.clear();
+        }
+        return drawn;
+    }
+
+private:
+    osg::RenderInfo& _renderInfo;
+    osgUtil::RenderLeaf*& _previous;
+    std::vector<PlannedCloud>& _clouds;
+    const std::vector<BinChunk>& _where;
+    unsigned int _unclaimedReads = 0;
+};
 
 }
 
@@ -77,52 +130,8 @@ void osgGlyphs::detail::drawBinInRounds(osg::RenderInfo& renderInfo, osgUtil::Re
 
     OcclusionContext* context = osg::get<OcclusionContext>(state.getContextID());
     context->setBinRounds(&rounds);
-    const bool drawnBefore = context->recordDraw(renderInfo);
     std::stable_sort(inView.begin(), inView.end(),
                      [](const ChunkInView& a, const ChunkInView& b) { return a.nearest < b.nearest; });
-    const size_t cover = putScreenCoverFirst(inView, int(viewport->width()), int(viewport->height()));
-    std::vector<size_t> ends = getRoundEnds(cover, inView.size(), drawnBefore);
-    bool testing = false;
-    unsigned int drawnSinceRead = 0, unclaimedReads = 0;
-    size_t begin = 0;
-    for (unsigned int roundIndex = 0; roundIndex < ends.size(); ++roundIndex)
-    {
-        // Every cloud draws in the first round (its first draw in the frame), the others only
-        // where they have chunks to draw.
-        if (roundIndex > 0 && begin >= inView.size())
-            break;
-        if ((roundIndex > 0 || drawnBefore) && !(testing && drawnSinceRead == 0))
-        {
-            testing = context->readDepth(state, *viewport);
-            ++unclaimedReads; // counted by the next cloud drawn
-            drawnSinceRead = 0;
-        }
-        for (PlannedCloud& cloud : clouds)
-        {
-            cloud.round->round = roundIndex;
-            cloud.round->chunks.clear();
-            cloud.round->testing = testing;
-        }
-        const size_t end = std::min(inView.size(), std::max(begin + 1, ends[roundIndex]));
-        for (size_t k = begin; k < end; ++k)
-            if (!(testing && isChunkHidden(inView[k], context->getPyramid())))
-            {
-                const BinChunk& chunk = where[inView[k].chunk];
-                clouds[chunk.cloud].round->chunks.push_back(chunk.chunk);
-            }
-        begin = end;
-        for (PlannedCloud& cloud : clouds)
-        {
-            CloudRound& round = *cloud.round;
-            if (roundIndex > 0 && (round.drewAll || round.chunks.empty()))
-                continue;
-            round.depthReadbacks = unclaimedReads;
-            unclaimedReads = 0;
-            render(cloud.leaf, renderInfo, previous);
-            // What it drew: the round's chunks, or all in view where it could not be culled.
-            for (unsigned int chunk : round.chunks)
-                drawnSinceRead += cloud.chunks->chunks[chunk].count;
-        }
-    }
+    BinCloudRounds(renderInfo, previous, clouds, where).run(renderInfo, *viewport, *context, inView);
     context->setBinRounds(nullptr);
 }

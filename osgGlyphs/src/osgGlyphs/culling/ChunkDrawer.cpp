@@ -1,5 +1,6 @@
 #include "ChunkDrawer.h"
 #include "BinRounds.h"
+#include "CullingRounds.h"
 #include "OcclusionContext.h"
 #include "ScreenCover.h"
 
@@ -115,6 +116,12 @@ void setProgramTest(osg::State& state, int levels, const OcclusionContext* conte
         ext->glUniform4iv(rectangles, levels, context->getAtlasLevels().data());
 }
 
+void recordOutcome(std::vector<unsigned char>* outcomes, unsigned int chunk, unsigned char outcome)
+{
+    if (outcomes)
+        (*outcomes)[chunk] = outcome;
+}
+
 /** Draws chunks as one multi-draw of their ranges of the drawn arrays; chunks that follow each
  * other in the arrays as well as in the list make one range. */
 class RangeDrawer
@@ -192,6 +199,53 @@ bool osgGlyphs::detail::isChunkHidden(const ChunkInView& chunk, const DepthPyram
 namespace
 {
 
+/** One cloud's rounds: each draws the chunks chosen in it and counts them in the statistics. */
+class CloudRounds : public CullingRounds
+{
+public:
+    CloudRounds(osg::State& state, OcclusionContext& context, RangeDrawer& drawer,
+                GlyphCullingStatistics& statistics, std::vector<unsigned char>* outcomes)
+        : _state(state), _context(context), _drawer(drawer), _statistics(statistics), _outcomes(outcomes)
+    {
+    }
+
+protected:
+    void depthRead(bool testing) override
+    {
+        ++_statistics.depthReadbacks;
+        setProgramTest(_state, testing ? _context.applyPyramidTexture(_state) : 0, &_context);
+    }
+
+    void choose(unsigned int round, const ChunkInView& chunk, bool hidden) override
+    {
+        if (hidden)
+        {
+            ++_statistics.chunksOccluded;
+            recordOutcome(_outcomes, chunk.chunk, CULLING_OCCLUDED);
+            return;
+        }
+        _chunks.push_back(chunk.chunk);
+        recordOutcome(_outcomes, chunk.chunk, static_cast<unsigned char>(CULLING_FIRST_ROUND + round));
+    }
+
+    unsigned int draw(unsigned int, bool) override
+    {
+        const unsigned int drawn = _drawer.drawChunks(_chunks);
+        _chunks.clear();
+        _statistics.glyphsSubmitted += drawn;
+        ++_statistics.rounds;
+        return drawn;
+    }
+
+private:
+    osg::State& _state;
+    OcclusionContext& _context;
+    RangeDrawer& _drawer;
+    GlyphCullingStatistics& _statistics;
+    std::vector<unsigned char>* _outcomes;
+    std::vector<unsigned int> _chunks;
+};
+
 /** Draws the chunks a FRONT_TO_BACK_BIN chose for the cloud in this round (drawBinInRounds). */
 void drawBinRound(osg::State& state, OcclusionContext& context, const GlyphChunks& chunks,
                   GlyphCulling culling, CloudRound& planned, GlyphCullingStatistics& statistics,
@@ -250,11 +304,6 @@ bool osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo, const GlyphChunk
     }
     if (outcomes)
         outcomes->assign(chunks.chunks.size(), CULLING_OUTSIDE_VIEW);
-    auto record = [outcomes](unsigned int chunk, unsigned char outcome)
-    {
-        if (outcomes)
-            (*outcomes)[chunk] = outcome;
-    };
     statistics = GlyphCullingStatistics();
     statistics.chunks = static_cast<unsigned int>(chunks.chunks.size());
     const osg::Viewport* viewport = state.getCurrentViewport();
@@ -275,59 +324,15 @@ bool osgGlyphs::detail::drawChunks(osg::RenderInfo& renderInfo, const GlyphChunk
         for (const ChunkInView& chunk : inView)
         {
             round.push_back(chunk.chunk);
-            record(chunk.chunk, CULLING_FIRST_ROUND);
+            recordOutcome(outcomes, chunk.chunk, CULLING_FIRST_ROUND);
         }
         statistics.glyphsSubmitted = drawer.drawChunks(round);
         statistics.rounds = 1;
         return true;
     }
 
-    // After another cloud in the same camera and frame, even the first round is tested: the
-    // depth buffer already holds that cloud's glyphs.
-    const bool drawnBefore = context->recordDraw(renderInfo);
-    bool testing = false;
-    size_t begin = 0;
-    // The first round lays down the cloud's front over the view.
-    const size_t cover = putScreenCoverFirst(inView, int(viewport->width()), int(viewport->height()));
-    // A cloud drawn after others is tested from its first round on, against the nearer clouds'
-    // depth: its other chunks are one round, since read-backs of its own few layers cost more
-    // than they cull.
-    unsigned int drawnSinceRead = 0;
-    for (size_t end : getRoundEnds(cover, inView.size(), drawnBefore))
-    {
-        if (begin >= inView.size())
-            break;
-        // What the rounds so far drew is what this one is tested against; after a round that drew
-        // nothing the pyramid read before it still holds.
-        if ((begin > 0 || drawnBefore) && !(testing && drawnSinceRead == 0))
-        {
-            ++statistics.depthReadbacks;
-            testing = context->readDepth(state, *viewport);
-            setProgramTest(state, testing ? context->applyPyramidTexture(state) : 0, context);
-            drawnSinceRead = 0;
-        }
-        const size_t roundEnd = std::min(inView.size(), std::max(begin + 1, end));
-        round.clear();
-        for (size_t k = begin; k < roundEnd; ++k)
-        {
-            const ChunkInView& chunk = inView[k];
-            if (testing && isChunkHidden(chunk, context->getPyramid()))
-            {
-                ++statistics.chunksOccluded;
-                record(chunk.chunk, CULLING_OCCLUDED);
-            }
-            else
-            {
-                round.push_back(chunk.chunk);
-                record(chunk.chunk, static_cast<unsigned char>(CULLING_FIRST_ROUND + statistics.rounds));
-            }
-        }
-        const unsigned int drawn = drawer.drawChunks(round);
-        statistics.glyphsSubmitted += drawn;
-        drawnSinceRead += drawn;
-        ++statistics.rounds;
-        begin = roundEnd;
-    }
+    CloudRounds rounds(state, *context, drawer, statistics, outcomes);
+    rounds.run(renderInfo, *viewport, *context, inView);
     setProgramTest(state, 0);
     return true;
 }

@@ -7,6 +7,8 @@
 #include "BinRounds.h"
 #include "DepthPyramid.h"
 
+#include <osgGlyphs/TextureUnits>
+
 #include <osg/GLObjects>
 #include <osg/Image>
 #include <osg/RenderInfo>
@@ -18,9 +20,6 @@ namespace osgGlyphs
 {
 namespace detail
 {
-
-/** The texture unit of the depth pyramid that glyph programs test glyphs against. */
-const unsigned int DEPTH_PYRAMID_TEXTURE_UNIT = 7;
 
 /** The most levels of the depth pyramid the glyph programs read: 2^16 pixels a side. */
 const int MAX_PYRAMID_TEXTURE_LEVELS = 16;
