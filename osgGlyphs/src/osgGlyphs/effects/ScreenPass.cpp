@@ -16,7 +16,6 @@ namespace
 const char* const AMBIENT_OCCLUSION_DEFINE = "OSGGLYPHS_SCREEN_AMBIENT_OCCLUSION";
 const char* const OUTLINES_DEFINE = "OSGGLYPHS_SCREEN_OUTLINES";
 const char* const OCCLUSION_PASS_DEFINE = "OSGGLYPHS_SCREEN_OCCLUSION_PASS";
-const unsigned int COLOR_UNIT = 0, DEPTH_UNIT = 1, OCCLUSION_UNIT = 2;
 
 /** Culls a group's children in place of the camera's (it has none): the group stays their only
  * parent, so their world matrices and node paths are the scene's. */
@@ -146,16 +145,17 @@ ScreenPass::ScreenPass(osg::Group& content)
 
     for (osg::StateSet* stateSet : {_composite.get(), _occlusionPass.get()})
     {
-        stateSet->setTextureAttribute(COLOR_UNIT, _color.get());
-        stateSet->setTextureAttribute(DEPTH_UNIT, _depth.get());
-        stateSet->addUniform(new osg::Uniform("osgGlyphs_effectsColor", int(COLOR_UNIT)));
-        stateSet->addUniform(new osg::Uniform("osgGlyphs_effectsDepth", int(DEPTH_UNIT)));
+        stateSet->setTextureAttribute(SCREEN_COLOR_TEXTURE_UNIT, _color.get());
+        stateSet->setTextureAttribute(SCREEN_DEPTH_TEXTURE_UNIT, _depth.get());
+        stateSet->addUniform(new osg::Uniform("osgGlyphs_effectsColor", int(SCREEN_COLOR_TEXTURE_UNIT)));
+        stateSet->addUniform(new osg::Uniform("osgGlyphs_effectsDepth", int(SCREEN_DEPTH_TEXTURE_UNIT)));
     }
     // The children's colour is premultiplied by its alpha, their coverage: transparent children
     // (DepthPeeling) blend over what the view drew outside the node.
     _composite->setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA));
-    _composite->setTextureAttribute(OCCLUSION_UNIT, _occlusion.get());
-    _composite->addUniform(new osg::Uniform("osgGlyphs_effectsOcclusion", int(OCCLUSION_UNIT)));
+    _composite->setTextureAttribute(SCREEN_OCCLUSION_TEXTURE_UNIT, _occlusion.get());
+    _composite->addUniform(
+        new osg::Uniform("osgGlyphs_effectsOcclusion", int(SCREEN_OCCLUSION_TEXTURE_UNIT)));
 }
 
 void ScreenPass::resize(int width, int height)

@@ -17,8 +17,6 @@ using namespace osgGlyphs::detail;
 namespace
 {
 
-const unsigned int LAYER_TEXTURE_UNIT = 0;
-
 /** A k-buffer slot without a fragment: beyond every depth's float bits (k-buffer.glsl). */
 const GLuint EMPTY_LAYER = 0xffffffffu;
 
@@ -69,7 +67,7 @@ osg::ref_ptr<osg::StateSet> createCompositionStateSet(osg::BlendFunc* blend, boo
     stateSet->setAttribute(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false), ON);
     stateSet->setMode(GL_DEPTH_TEST, OFF);
     stateSet->setMode(GL_CULL_FACE, OFF);
-    stateSet->addUniform(new osg::Uniform("osgGlyphs_layer", static_cast<int>(LAYER_TEXTURE_UNIT)), ON);
+    stateSet->addUniform(new osg::Uniform("osgGlyphs_layer", static_cast<int>(PEEL_LAYER_TEXTURE_UNIT)), ON);
     stateSet->addUniform(new osg::Uniform("osgGlyphs_premultiply", premultiply ? 1.0f : 0.0f), ON);
     return stateSet;
 }
@@ -199,14 +197,14 @@ void PeelingPasses::resizeTargets(osg::State& state, int width, int height)
     // unit is active, behind OSG's back, and the next drawable would sample the wrong one.
     for (osg::Texture2D* texture : {t.opaqueDepth.get(), t.layerDepth.get(), t.previousDepth.get(),
                                     t.nearestDepth.get(), t.layerColor.get(), t.accumulatedColor.get()})
-        state.applyTextureAttribute(LAYER_TEXTURE_UNIT, texture);
-    state.haveAppliedTextureAttribute(LAYER_TEXTURE_UNIT, osg::StateAttribute::TEXTURE);
+        state.applyTextureAttribute(PEEL_LAYER_TEXTURE_UNIT, texture);
+    state.haveAppliedTextureAttribute(PEEL_LAYER_TEXTURE_UNIT, osg::StateAttribute::TEXTURE);
     _passStateSet->setTextureAttribute(DEPTH_PEEL_TEXTURE_UNIT, t.previousDepth.get());
     _kBufferStateSet->setTextureAttribute(DEPTH_PEEL_TEXTURE_UNIT, t.opaqueDepth.get());
     const unsigned int PROTECTED = osg::StateAttribute::ON | osg::StateAttribute::PROTECTED;
-    _underStateSet->setTextureAttribute(LAYER_TEXTURE_UNIT, t.layerColor.get(), PROTECTED);
-    _overStateSet->setTextureAttribute(LAYER_TEXTURE_UNIT, t.accumulatedColor.get(), PROTECTED);
-    _depthStateSet->setTextureAttribute(LAYER_TEXTURE_UNIT, t.nearestDepth.get(), PROTECTED);
+    _underStateSet->setTextureAttribute(PEEL_LAYER_TEXTURE_UNIT, t.layerColor.get(), PROTECTED);
+    _overStateSet->setTextureAttribute(PEEL_LAYER_TEXTURE_UNIT, t.accumulatedColor.get(), PROTECTED);
+    _depthStateSet->setTextureAttribute(PEEL_LAYER_TEXTURE_UNIT, t.nearestDepth.get(), PROTECTED);
 }
 
 void PeelingPasses::compose(osg::RenderInfo& renderInfo, osg::StateSet* stateSet)
@@ -288,7 +286,7 @@ bool PeelingPasses::copyOpaqueDepth(osg::State& state, const GLint viewport[4])
         resizeTargets(state, x1, y1);
     // A copy rather than a blit: the target's depth format may differ. A multisampled target
     // cannot be copied.
-    state.applyTextureAttribute(LAYER_TEXTURE_UNIT, _targets.opaqueDepth.get());
+    state.applyTextureAttribute(PEEL_LAYER_TEXTURE_UNIT, _targets.opaqueDepth.get());
     while (glGetError() != GL_NO_ERROR)
     {
     }

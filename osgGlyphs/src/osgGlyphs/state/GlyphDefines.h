@@ -22,6 +22,11 @@ extern const char* const COMPRESSED_POSITIONS_DEFINE;
 /** Set by the cull traversal (not a variant) where any of OSG's clip planes is on. */
 extern const char* const CLIP_PLANES_DEFINE;
 
+/** Every define of the glyph programs that a StateSet sets: the one table from which every stage's
+ * #pragma import_defines is generated (generateDefinesGlsl). A define missing here is never seen
+ * by the shaders; test_shader_defines fails on a stage that tests one. */
+const std::vector<const char*>& getGlyphProgramDefines();
+
 /** The defines of a variant, as its StateSet sets them. */
 std::vector<std::string> getVariantDefines(const GlyphVariant& variant);
 

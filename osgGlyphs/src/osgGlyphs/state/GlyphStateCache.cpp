@@ -54,22 +54,16 @@ std::map<std::string, std::string> generatedSources(const GlyphTechnique& techni
 
 }
 
-const char* const osgGlyphs::GLYPH_LIT_DEFINE = "OSGGLYPHS_LIT";
-
 void osgGlyphs::setGlyphLighting(osg::StateSet& stateSet, bool lit)
 {
     stateSet.setDefine(GLYPH_LIT_DEFINE, osg::StateAttribute::OVERRIDE |
                                              (lit ? osg::StateAttribute::ON : osg::StateAttribute::OFF));
 }
 
-const char* const osgGlyphs::GLYPH_CLIP_CAPS_DEFINE = "OSGGLYPHS_CLIP_CAPS";
-
 void osgGlyphs::setClipCaps(osg::StateSet& stateSet, bool capped)
 {
     stateSet.setDefine(GLYPH_CLIP_CAPS_DEFINE, capped ? osg::StateAttribute::ON : osg::StateAttribute::OFF);
 }
-
-const char* const osgGlyphs::GLYPH_SHADOWS_DEFINE = "OSGGLYPHS_SHADOWS";
 
 void osgGlyphs::setGlyphShadows(osg::StateSet& stateSet, bool receive, unsigned int shadowTextureUnit)
 {
@@ -100,8 +94,6 @@ void osgGlyphs::setSurfaceShading(osg::StateSet& stateSet)
     stateSet.addUniform(new osg::Uniform("osgGlyphs_material", GlyphCloud::getDefaultMaterial()));
 }
 
-const char* const osgGlyphs::GLYPH_AMBIENT_OCCLUSION_DEFINE = "OSGGLYPHS_AMBIENT_OCCLUSION";
-
 void osgGlyphs::setGlyphAmbientOcclusion(osg::StateSet& stateSet, bool on)
 {
     if (on)
@@ -110,9 +102,6 @@ void osgGlyphs::setGlyphAmbientOcclusion(osg::StateSet& stateSet, bool on)
         stateSet.setDefine(GLYPH_AMBIENT_OCCLUSION_DEFINE,
                            osg::StateAttribute::OVERRIDE | osg::StateAttribute::OFF);
 }
-
-const char* const osgGlyphs::GLYPH_DEPTH_PEEL_DEFINE = "OSGGLYPHS_DEPTH_PEEL";
-const char* const osgGlyphs::GLYPH_K_BUFFER_DEFINE = "OSGGLYPHS_K_BUFFER";
 
 GlyphStateCache* GlyphStateCache::instance()
 {
@@ -227,7 +216,7 @@ osg::ref_ptr<osg::StateSet> GlyphStateCache::createStateSet(const GlyphTechnique
     }
     // The depth pyramid of occlusion culling is bound while a cloud draws (ChunkDrawer).
     stateSet->addUniform(
-        new osg::Uniform("osgGlyphs_depthPyramid", static_cast<int>(detail::DEPTH_PYRAMID_TEXTURE_UNIT)));
+        new osg::Uniform("osgGlyphs_depthPyramid", static_cast<int>(DEPTH_PYRAMID_TEXTURE_UNIT)));
     technique.configureStateSet(*stateSet, variant);
     return stateSet;
 }
