@@ -589,6 +589,11 @@ void GlyphCloud::accept(osg::NodeVisitor& nv)
     cv->popStateSet();
 }
 
+// Mirrors osgUtil::CullVisitor::apply(osg::Drawable&) of OSG 3.6.5 (src/osgUtil/CullVisitor.cpp),
+// which cannot be called: it tests and sorts by getBoundingBox(), in the parent's coordinates
+// under the parent's model-view, where the glyphs are drawn relative to the origin under a
+// model-view translated by it in double precision (docs/design/precision.md). Added: that
+// model-view, and the clip-plane StateSet. Left out: OSG's warning for a NaN depth (not drawn).
 void GlyphCloud::cullRelativeToOrigin(osgUtil::CullVisitor& cv)
 {
     if (getCullCallback())
@@ -643,8 +648,11 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
     const bool displayList = _useDisplayList && _supportsDisplayList;
     const bool culling = chunks && canDrawChunks();
     bool firstDraw = true;
-    // osg::Geometry::drawImplementation, with the chunks that may be seen as its primitives, and
-    // the selection drawn again.
+    // Mirrors osg::Geometry::drawImplementation of OSG 3.6.5 (src/osg/Geometry.cpp), whose
+    // drawPrimitivesImplementation is not virtual: the chunks that may be seen replace the
+    // primitive sets, and the selection is drawn again. Left out: the check for deprecated
+    // arrays, which a cloud never has.
+    const bool checkForGLErrors = state.getCheckForGLErrors() == osg::State::ONCE_PER_ATTRIBUTE;
     const bool usingVertexBufferObjects =
         state.useVertexBufferObject(_supportsVertexBufferObjects && _useVertexBufferObjects);
     const bool usingVertexArrayObjects =
@@ -652,12 +660,17 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
     osg::VertexArrayState* vas = state.getCurrentVertexArrayState();
     vas->setVertexBufferObjectSupported(usingVertexBufferObjects);
     drawVertexArraysImplementation(renderInfo);
+    if (checkForGLErrors)
+        state.checkGLErrors("GlyphCloud::drawImplementation() after vertex arrays setup.");
     if (culling)
     {
         ChunkRecord* record = _cullingRecorded ? &_chunkRecords[state.getContextID()] : nullptr;
         if (record)
             record->chunks = chunks;
-        // In a FRONT_TO_BACK_BIN, drawn once a round: the selection goes with the first.
+        // In a FRONT_TO_BACK_BIN (culling/FrontToBackBin.cpp) the bin draws its clouds together in
+        // rounds of culling, each cloud once a round: drawChunks finds what the bin chose for this
+        // round through the context (OcclusionContext::findBinRound). The selection goes with the
+        // first round.
         firstDraw = detail::drawChunks(renderInfo, *chunks, _culling, statistics,
                                        record ? &record->outcomes : nullptr);
     }
@@ -673,6 +686,8 @@ void GlyphCloud::drawImplementation(osg::RenderInfo& renderInfo) const
         vas->unbindVertexBufferObject();
         vas->unbindElementBufferObject();
     }
+    if (checkForGLErrors)
+        state.checkGLErrors("end of GlyphCloud::drawImplementation().");
 }
 
 void GlyphCloud::drawSelection(osg::State& state, bool usingVertexBufferObjects) const
