@@ -1,7 +1,7 @@
 // The osgGlyphs wrapper domain and its versions (DomainVersion.h): files written before the domain
 // (tests/data/osgdb, see make-fixtures.sh there) read with every property as it was set, files
 // written in a version say so and read back, a file of a later version reads as far as this code
-// knows it, and a tile archive written before still opens.
+// knows it, a tile archive written before still opens, and one written now declares the version.
 
 #include "DomainVersion.h"
 #include "RenderHarness.h"
@@ -12,7 +12,9 @@
 #include <osgGlyphs/DepthPeeling>
 #include <osgGlyphs/GlyphCloud>
 #include <osgGlyphs/ScreenEffects>
+#include <osgGlyphs/Version>
 #include <osgGlyphsPaper/Techniques>
+#include <osgGlyphsTiles/TileBuilder>
 #include <osgGlyphsTiles/TileChecksum>
 #include <osgGlyphsTiles/TileRoot>
 
@@ -31,6 +33,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -467,4 +470,45 @@ TEST(TileArchiveBeforeTheDomain, OpensAndEveryTileReadsWithItsChecksum)
         std::string error;
         EXPECT_TRUE(osgGlyphsTiles::checkTileChecksum(*tile, error)) << name << ": " << error;
     }
+}
+
+// An archive written today asks for the domain's version: each of its files (.osgb, stored whole)
+// carries the binary header's domain entry, the name's length and bytes and the version.
+TEST(TileArchiveInTheDomain, EveryFileDeclaresTheDomainVersion)
+{
+    EXPECT_EQ(std::string(OSGGLYPHS_SERIALIZER_DOMAIN_ENTRY), osgGlyphsWrappers::domainVersionEntry());
+    osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
+    osg::ref_ptr<osg::Vec3Array> positions = new osg::Vec3Array;
+    for (int i = 0; i < 120; ++i)
+        positions->push_back(osg::Vec3(float(i % 5), float(i / 5 % 4), float(i / 20)));
+    cloud->setPositions(positions.get());
+    osgGlyphsTiles::TileOptions options;
+    options.maxGlyphsPerTile = 30;
+    options.cellsPerAxis = 2;
+    options.threads = 1;
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder = new osgGlyphsTiles::TileBuilder(*cloud, options);
+    const std::string path = osgGlyphsTest::outputPath("osgdb_versioned_tiles.osga");
+    std::string error;
+    ASSERT_TRUE(builder->addGlyphs(*cloud, error)) << error;
+    ASSERT_TRUE(builder->write(path, error)) << error;
+
+    osg::ref_ptr<osgDB::Archive> archive = osgDB::openArchive(path, osgDB::ReaderWriter::READ);
+    ASSERT_TRUE(archive.valid()) << path;
+    osgDB::Archive::FileNameList names;
+    ASSERT_TRUE(archive->getFileNames(names));
+    ASSERT_GE(names.size(), 2u);
+    std::string entry;
+    auto putWord = [&entry](uint32_t word)
+    { entry.append(reinterpret_cast<const char*>(&word), sizeof(word)); };
+    putWord(static_cast<uint32_t>(std::strlen(OSGGLYPHS_SERIALIZER_DOMAIN)));
+    entry += OSGGLYPHS_SERIALIZER_DOMAIN;
+    putWord(static_cast<uint32_t>(OSGGLYPHS_SERIALIZER_VERSION));
+    const std::string bytes = fileBytes(path);
+    size_t declared = 0;
+    for (size_t at = bytes.find(entry); at != std::string::npos; at = bytes.find(entry, at + 1))
+        ++declared;
+    // At least one a file: the builder stores a placeholder root first, which the root replaces.
+    EXPECT_GE(declared, names.size()) << "files in " << path << " that declare the domain";
+    for (const std::string& name : names)
+        EXPECT_TRUE(archive->readNode(name).getNode()) << name;
 }

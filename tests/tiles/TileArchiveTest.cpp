@@ -4,6 +4,8 @@
 #include "TileArchive.h"
 #include "RenderHarness.h"
 
+#include <osgGlyphs/Version>
+
 #include <osg/Group>
 #include <osgDB/Archive>
 #include <osgDB/ReadFile>
@@ -49,11 +51,14 @@ TEST(TileArchive, WritesTheBytesOfOsgDBsArchiveWriter)
     const std::string ours = osgGlyphsTest::outputPath("archive_ours.osga");
     std::remove(stock.c_str());
     {
+        // Ours asks for the version of osgGlyphs' serializers, as a writer may.
+        osg::ref_ptr<osgDB::Options> versioned = new osgDB::Options;
+        versioned->setPluginStringData("CustomDomains", OSGGLYPHS_SERIALIZER_DOMAIN_ENTRY);
         osg::ref_ptr<osgDB::Archive> archive = osgDB::openArchive(stock, osgDB::ReaderWriter::CREATE);
         ASSERT_TRUE(archive.valid());
         for (unsigned int i = 0; i < FILES; ++i)
-            ASSERT_TRUE(archive->writeNode(*namedGroup(fileName(i)), fileName(i)).success());
-        ASSERT_TRUE(archive->writeNode(*namedGroup("again"), fileName(3)).success());
+            ASSERT_TRUE(archive->writeNode(*namedGroup(fileName(i)), fileName(i), versioned.get()).success());
+        ASSERT_TRUE(archive->writeNode(*namedGroup("again"), fileName(3), versioned.get()).success());
         archive->close();
     }
     TileArchive archive;

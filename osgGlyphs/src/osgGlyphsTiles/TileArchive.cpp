@@ -1,6 +1,9 @@
 #include "TileArchive.h"
 
+#include <osgGlyphs/Version>
+
 #include <osgDB/FileNameUtils>
+#include <osgDB/Options>
 #include <osgDB/Registry>
 
 #include <cerrno>
@@ -82,8 +85,14 @@ bool TileArchive::writeNode(const osg::Node& node, const std::string& name, std:
         error = "no osgDB plugin writes " + name;
         return false;
     }
+    static const osg::ref_ptr<osgDB::Options> versioned = []
+    {
+        osg::ref_ptr<osgDB::Options> options = new osgDB::Options;
+        options->setPluginStringData("CustomDomains", OSGGLYPHS_SERIALIZER_DOMAIN_ENTRY);
+        return options;
+    }();
     std::ostringstream bytes(std::ios::out | std::ios::binary);
-    const osgDB::ReaderWriter::WriteResult written = writer->writeNode(node, bytes, nullptr);
+    const osgDB::ReaderWriter::WriteResult written = writer->writeNode(node, bytes, versioned.get());
     if (!written.success())
     {
         error =

@@ -12,22 +12,25 @@
 //   asked, and writes for version 0 otherwise.
 // - 1 (DOMAIN_VERSION): the same properties as 0, in a file that says so in its header
 //   ("#CustomDomain osgGlyphs 1" in .osgt); a writer asks through its osgDB::Options
-//   (domainVersionEntry()). Not for .osgx: OSG 3.6.5 writes the domain into XML files but cannot
+//   (domainVersionEntry(), OSGGLYPHS_SERIALIZER_DOMAIN_ENTRY in <osgGlyphs/Version>). Tile
+//   archives ask. Not for .osgx: OSG 3.6.5 writes the domain into XML files but cannot
 //   read such a file back.
 // Every property registered today is outside any UPDATE_TO_VERSION_SCOPED, so files of either
 // version, and of any later one, hold it. A property added later goes after
-// UPDATE_TO_VERSION_SCOPED(2), DOMAIN_VERSION becomes 2, and the writers that should store it ask
-// for 2: osgDB reads it only from files that declare 2 or more and writes it only when asked.
-// A file declaring a version this code does not know yet is read as far as this code knows it;
-// what a later release appends is skipped.
+// UPDATE_TO_VERSION_SCOPED(2), OSGGLYPHS_SERIALIZER_VERSION (and its entry) becomes 2, and the writers that
+// should store it ask for 2: osgDB reads it only from files that declare 2 or more and writes it only when
+// asked. A file declaring a version this code does not know yet is read as far as this code knows it; what a
+// later release appends is skipped.
+
+#include <osgGlyphs/Version>
 
 #include <string>
 
 namespace osgGlyphsWrappers
 {
 
-constexpr const char* DOMAIN_NAME = "osgGlyphs";
-constexpr int DOMAIN_VERSION = 1;
+constexpr const char* DOMAIN_NAME = OSGGLYPHS_SERIALIZER_DOMAIN;
+constexpr int DOMAIN_VERSION = OSGGLYPHS_SERIALIZER_VERSION;
 
 /** "osgGlyphs:<version>": the entry of osgDB::Options' plugin string data "CustomDomains"
  * ("name:version;name:version") that has osgDB write .osgt and .osgb files in that version. */
