@@ -76,11 +76,6 @@ TrajectoryPlayer::Place TrajectoryPlayer::locate(double position) const
     return place;
 }
 
-bool TrajectoryPlayer::isEndKnown() const
-{
-    return _cache->getSource()->isIndexComplete() || _last < getNumFrames();
-}
-
 bool TrajectoryPlayer::nextPosition(double& position) const
 {
     const double stride = std::abs(_step);
@@ -92,9 +87,6 @@ bool TrajectoryPlayer::nextPosition(double& position) const
     double picture = std::round((position - first) * pictures) + (_step > 0 ? 1.0 : -1.0);
     if (picture > lastPicture || picture < 0.0)
     {
-        // Past the frames the source's index has found so far: wait for it, neither end nor loop.
-        if (picture > lastPicture && !isEndKnown())
-            return false;
         if (!_loop || lastPicture <= 0.0)
             return false;
         picture = picture < 0.0 ? lastPicture : 0.0;
@@ -126,12 +118,12 @@ void TrajectoryPlayer::update(double time)
     double next = _position;
     if (!nextPosition(next))
     {
-        _playing = !isEndKnown();
+        _playing = false;
         return;
     }
     _position = next;
     _lateCounted = false;
-    if (!_loop && !nextPosition(next) && isEndKnown())
+    if (!_loop && !nextPosition(next))
         _playing = false; // the last picture: it is shown, and playback ends there
     tellCache();
     if (!show(_position, false))
