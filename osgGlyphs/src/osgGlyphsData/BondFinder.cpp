@@ -1,6 +1,8 @@
 #include <osgGlyphsData/BondFinder>
 #include <osgGlyphsData/PointData>
 
+#include "CellCoordinates.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -134,19 +136,9 @@ struct Cell
     osg::Vec3d inverse{1.0, 1.0, 1.0};
     bool periodic[3] = {false, false, false};
 
-    osg::Vec3d toFractional(const osg::Vec3d& d) const
-    {
-        const double sz = d.z() * inverse.z();
-        const double sy = (d.y() - tilt.z() * sz) * inverse.y();
-        const double sx = (d.x() - tilt.x() * sy - tilt.y() * sz) * inverse.x();
-        return osg::Vec3d(sx, sy, sz);
-    }
+    osg::Vec3d toFractional(const osg::Vec3d& d) const { return detail::toCellFractional(d, tilt, inverse); }
 
-    osg::Vec3d toCartesian(const osg::Vec3d& s) const
-    {
-        return osg::Vec3d(length.x() * s.x() + tilt.x() * s.y() + tilt.y() * s.z(),
-                          length.y() * s.y() + tilt.z() * s.z(), length.z() * s.z());
-    }
+    osg::Vec3d toCartesian(const osg::Vec3d& s) const { return detail::toCellCartesian(s, length, tilt); }
 
     /** The distances between the cell's opposite faces, across a, b and c. */
     osg::Vec3d getWidths() const

@@ -1,5 +1,7 @@
 #include <osgGlyphsData/FrameInterpolation>
 
+#include "CellCoordinates.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -241,20 +243,10 @@ struct Cell
     }
 
     /** The fractional coordinates (in edges) of a displacement. */
-    osg::Vec3d toFractional(const osg::Vec3d& d) const
-    {
-        const double sz = d.z() * inverse.z();
-        const double sy = (d.y() - tilt.z() * sz) * inverse.y();
-        const double sx = (d.x() - tilt.x() * sy - tilt.y() * sz) * inverse.x();
-        return osg::Vec3d(sx, sy, sz);
-    }
+    osg::Vec3d toFractional(const osg::Vec3d& d) const { return detail::toCellFractional(d, tilt, inverse); }
 
     /** The displacement of fractional coordinates. */
-    osg::Vec3d toCartesian(const osg::Vec3d& s) const
-    {
-        return osg::Vec3d(length.x() * s.x() + tilt.x() * s.y() + tilt.y() * s.z(),
-                          length.y() * s.y() + tilt.z() * s.z(), length.z() * s.z());
-    }
+    osg::Vec3d toCartesian(const osg::Vec3d& s) const { return detail::toCellCartesian(s, length, tilt); }
 
     /** The shortest periodic image of a displacement, d + crossed edges: crossed counts the
      * boundaries that the short way crosses along each edge (positive up the edge). */
