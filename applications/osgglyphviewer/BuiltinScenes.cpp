@@ -50,7 +50,7 @@ osg::ref_ptr<ViewerScene> createDefaultScene(const ViewerOptions& options, std::
 {
     if (!checkNoColumnOptions(options.mapping, "built-in", error))
         return nullptr;
-    if (options.mapping.shape != osgGlyphs::GlyphShape::Sphere)
+    if (osgGlyphs::isVectorShape(options.mapping.shape))
     {
         error = std::string("--glyph ") + osgGlyphs::getShapeName(options.mapping.shape) +
                 " needs vectors, and the built-in scene has none (try --random N)";

@@ -8,6 +8,8 @@
 //   radius / osgGlyphs_radiusScale and the scalar in [0, 1] over the data's range, as floats
 // osgGlyphs_color: RGBA8 per glyph (OSGGLYPHS_COLOR_RGBA only).
 // osgGlyphs_vector: direction and magnitude per glyph (vector shapes only).
+// osgGlyphs_axes, osgGlyphs_orientation: per ellipsoid, its semi-axes as fractions of its radius
+//   and the quaternion (x, y, z, w) that turns its body axes into the model's (ellipsoids only).
 // osgGlyphs_ambientOcclusion: RGBA8 per glyph (OSGGLYPHS_AMBIENT_OCCLUSION only): rgb the model-space
 //   direction term of the light reaching the glyph, mapped from [-1, 1], a its mean.
 // osgGlyphs_position: the glyph's position, for instanced techniques (else gl_Vertex); with
@@ -86,6 +88,18 @@ vec4 glyphPosition()
     return vec4(position, 1.0);
 }
 
+#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+/** The rotation of a unit quaternion (x, y, z, w). */
+mat3 rotationOf(vec4 q)
+{
+    vec3 twice = 2.0 * q.xyz;
+    float xx = q.x * twice.x, yy = q.y * twice.y, zz = q.z * twice.z;
+    float xy = q.x * twice.y, xz = q.x * twice.z, yz = q.y * twice.z;
+    float wx = q.w * twice.x, wy = q.w * twice.y, wz = q.w * twice.z;
+    return mat3(1.0 - yy - zz, xy + wz, xz - wy, xy - wz, 1.0 - xx - zz, yz + wx, xz + wy, yz - wx, 1.0 - xx - yy);
+}
+#endif
+
 Glyph decodeGlyph()
 {
     Glyph glyph;
@@ -109,6 +123,14 @@ Glyph decodeGlyph()
     vec3 axis = vector / magnitude;
     glyph.sphere.xyz = center - axis * (len * osgGlyphs_vectorParams.z);
     glyph.axis = vec4(axis, len);
+#endif
+#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+    float rotationLength = length(osgGlyphs_orientation);
+    if (!(rotationLength > 0.0))
+        glyph.sphere.w = 0.0; // no rotation: not drawn
+    vec3 semiAxes = osgGlyphs_axes.xyz * glyphRadius();
+    glyph.semiAxes = mat3(gl_ModelViewMatrix) * rotationOf(osgGlyphs_orientation / rotationLength) *
+                     mat3(semiAxes.x, 0.0, 0.0, 0.0, semiAxes.y, 0.0, 0.0, 0.0, semiAxes.z);
 #endif
     return glyph;
 }

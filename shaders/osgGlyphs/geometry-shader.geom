@@ -9,6 +9,7 @@ layout(triangle_strip, max_vertices = 4) out;
 #include "projection.glsl"
 #include "sphere.glsl"
 #include "vector.glsl"
+#include "ellipsoid.glsl"
 
 #include "bound.glsl"
 
@@ -20,6 +21,9 @@ in GlyphVertex
     vec4 axis;
     vec4 color;
     vec4 occlusion;
+#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+    mat3 semiAxes;
+#endif
 }
 glyphIn[];
 
@@ -28,7 +32,14 @@ glyphIn[];
 
 void main()
 {
-    Glyph glyph = Glyph(glyphIn[0].sphere, glyphIn[0].axis, glyphIn[0].color, glyphIn[0].occlusion);
+    Glyph glyph;
+    glyph.sphere = glyphIn[0].sphere;
+    glyph.axis = glyphIn[0].axis;
+    glyph.color = glyphIn[0].color;
+    glyph.occlusion = glyphIn[0].occlusion;
+#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+    glyph.semiAxes = glyphIn[0].semiAxes;
+#endif
     if (!isDrawn(glyph))
         return;
     vec2 corners[4];

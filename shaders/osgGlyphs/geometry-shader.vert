@@ -10,6 +10,9 @@ out GlyphVertex
     vec4 axis;
     vec4 color;
     vec4 occlusion;
+#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+    mat3 semiAxes;
+#endif
 }
 glyphOut;
 
@@ -20,5 +23,8 @@ void main()
     glyphOut.axis = glyph.axis;
     glyphOut.color = glyph.color;
     glyphOut.occlusion = glyph.occlusion;
+#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+    glyphOut.semiAxes = glyph.semiAxes;
+#endif
     gl_Position = vec4(glyph.sphere.xyz, 1.0);
 }

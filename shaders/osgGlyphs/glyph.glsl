@@ -14,12 +14,16 @@ uniform vec4 osgGlyphs_viewport;
 /** A glyph in eye space. */
 struct Glyph
 {
-    vec4 sphere; // centre (vector shapes: the tail's base centre), radius (0: not drawn)
+    vec4 sphere; // centre (vector shapes: the tail's base centre), radius (ellipsoids: the largest
+                 // semi-axis; 0: not drawn)
     vec4 axis;   // vector shapes: unit axis, length
     vec4 color;
     // Per-glyph ambient occlusion (GlyphCloud::setOcclusion): the light reaching a surface point of
     // unit eye-space normal n is clamp(occlusion.w + dot(occlusion.xyz, n), 0, 1); (0, 0, 0, 1) without.
     vec4 occlusion;
+#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+    mat3 semiAxes; // ellipsoids: the semi-axes as columns
+#endif
 };
 
 const float INFINITE_DISTANCE = 1.0e30;

@@ -12,6 +12,7 @@
 #include "projection.glsl"
 #include "sphere.glsl"
 #include "vector.glsl"
+#include "ellipsoid.glsl"
 #include "lighting.glsl"
 #include "varyings.glsl"
 #include "clip.glsl"
@@ -125,6 +126,10 @@ bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
                              Span(second.tEnter + start, second.tLeave + start, toEye * second.nEnter,
                                   toEye * second.nLeave),
                              t, normal);
+#elif defined(OSGGLYPHS_SHAPE_ELLIPSOID)
+    Span span;
+    if (ellipsoidSpan(origin, direction, fragSphere.xyz, fragInverseSemiAxes, span))
+        keepNearerDrawnPoint(origin, direction, span, t, normal);
 #else
     float tEnter, tLeave;
     if (intersectSphere(origin, direction, fragSphere, tEnter, tLeave))

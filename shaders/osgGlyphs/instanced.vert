@@ -6,6 +6,7 @@
 #include "projection.glsl"
 #include "sphere.glsl"
 #include "vector.glsl"
+#include "ellipsoid.glsl"
 #include "bound.glsl"
 
 #define OSGGLYPHS_VARYINGS_OUT 1

@@ -15,6 +15,9 @@ flat OSGGLYPHS_VARYING vec4 fragAxis; // unit axis, length
 #ifdef OSGGLYPHS_AMBIENT_OCCLUSION
 flat OSGGLYPHS_VARYING vec4 fragOcclusion; // Glyph.occlusion
 #endif
+#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+flat OSGGLYPHS_VARYING mat3 fragInverseSemiAxes; // takes the ellipsoid to the unit sphere
+#endif
 
 #ifdef OSGGLYPHS_VARYINGS_OUT
 void writeVaryings(Glyph glyph)
@@ -26,6 +29,9 @@ void writeVaryings(Glyph glyph)
 #endif
 #ifdef OSGGLYPHS_AMBIENT_OCCLUSION
     fragOcclusion = glyph.occlusion;
+#endif
+#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+    fragInverseSemiAxes = inverseSemiAxes(glyph.semiAxes);
 #endif
 }
 #endif

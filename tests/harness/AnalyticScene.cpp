@@ -60,6 +60,13 @@ struct Plane
     double halfExtent;
 };
 
+/** The quadric (x - centre)^T form (x - centre) <= 1: an ellipsoid. */
+struct Ellipsoid
+{
+    dvec3 centre;
+    glm::dmat3 form;
+};
+
 /** A solid of revolution about the unit axis from base: radius r0 at z0 to r1 at z1. */
 struct Segment
 {
@@ -197,6 +204,30 @@ bool hitSolid(const Segment& solid, dvec3 origin, dvec3 direction, double tMin, 
     return true;
 }
 
+/** The quadratic in t of the quadric along the ray, in the world frame: not the shaders' way (which
+ * maps the ellipsoid to the unit sphere), so that the two can disagree. */
+bool hitSolid(const Ellipsoid& solid, dvec3 origin, dvec3 direction, double tMin, Hit& nearest)
+{
+    const dvec3 m = origin - solid.centre;
+    const double a = dot(direction, solid.form * direction);
+    const double b = dot(m, solid.form * direction);
+    const double c = dot(m, solid.form * m) - 1.0;
+    const double discriminant = b * b - a * c;
+    if (discriminant < 0.0)
+        return false;
+    const double root = std::sqrt(discriminant);
+    const double q = b > 0.0 ? -(b + root) : -(b - root); // the roots are q / a and c / q
+    double t0 = q / a, t1 = c / q;
+    if (t0 > t1)
+        std::swap(t0, t1);
+    const double t = t0 >= tMin ? t0 : t1;
+    if (t < tMin || t >= nearest.t)
+        return false;
+    nearest.t = t;
+    nearest.normal = normalize(solid.form * (m + direction * t));
+    return true;
+}
+
 /** The slabs of the box; the normal is that of the face the ray enters. */
 bool hitSolid(const Box& solid, dvec3 origin, dvec3 direction, double tMin, Hit& nearest)
 {
@@ -261,6 +292,11 @@ bool isInside(const Segment& solid, dvec3 p)
     return z > solid.z0 && z < solid.z1 && glm::length(across) < radius;
 }
 
+bool isInside(const Ellipsoid& solid, dvec3 p)
+{
+    return dot(p - solid.centre, solid.form * (p - solid.centre)) < 1.0;
+}
+
 bool isInside(const Box& solid, dvec3 p)
 {
     return all(greaterThan(p, solid.min)) && all(lessThan(p, solid.max));
@@ -286,7 +322,7 @@ osg::Vec3d shadeLikeGlyphs(const osg::Vec3d& base, const osg::Vec3d& position, c
 
 struct AnalyticScene::Primitive
 {
-    std::variant<Sphere, Box, Plane, Segment> solid;
+    std::variant<Sphere, Box, Plane, Segment, Ellipsoid> solid;
     int label;
 };
 
@@ -306,6 +342,21 @@ int AnalyticScene::add(const Primitive& primitive)
 int AnalyticScene::addSphere(const osg::Vec3d& center, double radius)
 {
     return add(Primitive{Sphere{dvec4(toGlm(center), radius)}, -1});
+}
+
+int AnalyticScene::addEllipsoid(const osg::Vec3d& center, const osg::Vec3d& semiAxes,
+                                const osg::Quat& rotation)
+{
+    // form = R diag(1 / a^2) R^T, R's columns the rotated body axes.
+    glm::dmat3 form(0.0);
+    for (int k = 0; k < 3; ++k)
+    {
+        osg::Vec3d body;
+        body[k] = 1.0;
+        const dvec3 axis = toGlm(rotation * body);
+        form += glm::outerProduct(axis, axis) / (semiAxes[k] * semiAxes[k]);
+    }
+    return add(Primitive{Ellipsoid{toGlm(center), form}, -1});
 }
 
 int AnalyticScene::addBox(const osg::Vec3d& min, const osg::Vec3d& max)

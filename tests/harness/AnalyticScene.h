@@ -7,6 +7,7 @@
 #include "RenderHarness.h"
 
 #include <osg/Plane>
+#include <osg/Quat>
 
 #include <limits>
 #include <string>
@@ -50,6 +51,9 @@ public:
 
     /** Each add returns the primitive's label. */
     int addSphere(const osg::Vec3d& center, double radius);
+    /** The ellipsoid of semi-axes along its body x, y, z axes, turned by rotation (a body vector v
+     * lies at rotation * v from center). */
+    int addEllipsoid(const osg::Vec3d& center, const osg::Vec3d& semiAxes, const osg::Quat& rotation);
     int addBox(const osg::Vec3d& min, const osg::Vec3d& max);
     /** A plane through point with the given normal; only rays hitting it within the
      * given distance of point count (a finite square quad when used for a plane drawable). */

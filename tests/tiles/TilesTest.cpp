@@ -431,3 +431,19 @@ TEST(CoarseTiles, SparseDataKeepsCoverageAndMeanColour)
 }
 
 } // namespace
+
+// Tiles do not carry ellipsoids' semi-axes and turns yet: a builder refuses them in one message,
+// rather than writing tiles that draw nothing.
+TEST(TileArchives, RefuseEllipsoidsInOneMessage)
+{
+    osg::ref_ptr<GlyphCloud> cloud = randomCloud(100, 0.01f, osgGlyphs::GlyphShape::Sphere);
+    osg::ref_ptr<osg::Vec3Array> semiAxes = new osg::Vec3Array;
+    semiAxes->assign(100, osg::Vec3(0.02f, 0.01f, 0.01f));
+    cloud->setSemiAxes(semiAxes.get());
+    cloud->setShape(osgGlyphs::GlyphShape::Ellipsoid);
+    osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder = new osgGlyphsTiles::TileBuilder(*cloud);
+    std::string error;
+    EXPECT_FALSE(builder->addGlyphs(*cloud, error));
+    EXPECT_EQ(error,
+              "tiles do not hold ellipsoids yet (their semi-axes and turns): choose another glyph shape");
+}

@@ -99,7 +99,7 @@ SkipReason getSkipReason(const GlyphCloud& cloud, unsigned int i)
         return BAD_RADIUS;
     if (cloud.getScalars() && !std::isfinite((*cloud.getScalars())[i]))
         return NON_FINITE_SCALAR;
-    if (cloud.getShape() == GlyphShape::Sphere)
+    if (!isVectorShape(cloud.getShape()))
         return DRAWN;
     const osg::Vec3& vector = (*cloud.getVectors())[i];
     if (!isFinite(vector))
@@ -116,7 +116,7 @@ std::string diagnoseSkipped(const std::vector<PlacedCloud>& clouds)
     for (const PlacedCloud& placed : clouds)
     {
         const GlyphCloud& cloud = *placed.cloud;
-        vectorShape = vectorShape || cloud.getShape() != GlyphShape::Sphere;
+        vectorShape = vectorShape || isVectorShape(cloud.getShape());
         for (unsigned int i = 0; i < cloud.getNumGlyphs(); ++i)
         {
             const SkipReason reason = getSkipReason(cloud, i);
@@ -209,7 +209,7 @@ Footprint measureFootprint(const std::vector<PlacedCloud>& clouds, const osg::Ma
         const GlyphCloud& cloud = *placed.cloud;
         const osg::Matrixd toEye = placed.toWorld * view;
         const double scale = toEye.getScale().length() / std::sqrt(3.0) * pixelsPerUnit;
-        const bool vector = cloud.getShape() != GlyphShape::Sphere;
+        const bool vector = isVectorShape(cloud.getShape());
         const double widthFactor = cloud.getShape() == GlyphShape::Arrow
                                        ? 2.0 * std::max(1.0f, cloud.getArrowHeadRadiusRatio())
                                        : 2.0;

@@ -41,6 +41,16 @@ const std::size_t MAX_KEY_CATEGORIES = 12;
 const std::vector<std::vector<std::string>> VECTOR_CANDIDATES = {
     {"vx", "vy", "vz"}, {"velo_x", "velo_y", "velo_z"}, {"velocity_x", "velocity_y", "velocity_z"}};
 
+/** Ellipsoids' shape columns tried, in order: LAMMPS's diameters, OVITO's semi-axes. */
+const std::vector<std::vector<std::string>> SHAPE_CANDIDATES = {
+    {"shapex", "shapey", "shapez"}, {"Aspherical Shape.X", "Aspherical Shape.Y", "Aspherical Shape.Z"}};
+const float SHAPE_FACTORS[] = {0.5f, 1.0f};
+
+/** Quaternion columns, as x, y, z, w: LAMMPS's and GSD's, OVITO's. */
+const std::vector<std::vector<std::string>> ROTATION_CANDIDATES = {
+    {"quati", "quatj", "quatk", "quatw"},
+    {"Orientation.X", "Orientation.Y", "Orientation.Z", "Orientation.W"}};
+
 /** Colour columns, as PLY files name them. */
 const std::vector<std::string> RGB_COLUMNS = {"red", "green", "blue"};
 
@@ -116,7 +126,9 @@ bool GlyphMapper::prepare(const PointDataset& dataset, std::size_t startFrame, s
         error = (_options.positionColumns.empty() ? frameName(*data) : option("position")) + ": " + error;
         return false;
     }
-    const bool vectorShape = _options.shape != GlyphShape::Sphere;
+    if (!resolveEllipsoids(*data, error))
+        return false;
+    const bool vectorShape = osgGlyphs::isVectorShape(_options.shape);
     if (!resolveVectors(*data, vectorShape, error) || !resolveColor(*data, error))
         return false;
     if (!_options.radiusColumn.empty() && !data->hasColumn(_options.radiusColumn))
@@ -139,6 +151,33 @@ bool GlyphMapper::prepare(const PointDataset& dataset, std::size_t startFrame, s
     }
     else if (_colorSource == ColorSource::Element || _colorSource == ColorSource::Category)
         buildCategoryKey(*data);
+    return true;
+}
+
+bool GlyphMapper::resolveEllipsoids(const PointData& data, std::string& error)
+{
+    _semiAxisColumns.clear();
+    _rotationColumns.clear();
+    const int shape = findColumnTriple(data, SHAPE_CANDIDATES);
+    if (shape >= 0 && !_options.shapeGiven)
+        _options.shape = GlyphShape::Ellipsoid;
+    if (_options.shape != GlyphShape::Ellipsoid)
+        return true;
+    if (shape < 0)
+    {
+        error = option("glyph") + " ellipsoid needs semi-axes: no shapex,shapey,shapez in " +
+                frameName(data) + "; " + listColumns(data);
+        return false;
+    }
+    _semiAxisColumns = SHAPE_CANDIDATES[shape];
+    _semiAxisFactor = SHAPE_FACTORS[shape];
+    for (const std::vector<std::string>& names : ROTATION_CANDIDATES)
+        if (std::all_of(names.begin(), names.end(),
+                        [&](const std::string& name) { return data.hasColumn(name); }))
+        {
+            _rotationColumns = names;
+            break;
+        }
     return true;
 }
 
@@ -316,7 +355,7 @@ void GlyphMapper::computeBounds(const std::vector<osg::Vec3f>& positions)
 
 void GlyphMapper::computeSizes(const PointData& data, const std::vector<osg::Vec3f>& positions)
 {
-    const bool vectorShape = _options.shape != GlyphShape::Sphere;
+    const bool vectorShape = osgGlyphs::isVectorShape(_options.shape);
     const std::size_t n = data.getNumPoints();
     _radiusColumn = _options.radiusColumn;
     float factor = _options.radius > 0.0f ? _options.radius : 1.0f; // the factor of --radius-by
@@ -478,6 +517,8 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
         cloud->setVectors(arrays.vectors.get());
         cloud->setLengthScale(_lengthScale);
     }
+    cloud->setSemiAxes(arrays.semiAxes.get());
+    cloud->setOrientations(arrays.orientations.get());
     if (arrays.scalars.valid())
     {
         cloud->setScalarRange(_key.min, _key.max); // before the scalars: they are packed once, for it
@@ -522,7 +563,10 @@ bool GlyphMapper::updateCloud(GlyphCloud& cloud, const PointData& data, std::str
     const bool sameKinds = arrays.radii.valid() == (cloud.getRadii() != nullptr) &&
                            arrays.vectors.valid() == (cloud.getVectors() != nullptr) &&
                            arrays.scalars.valid() == (cloud.getScalars() != nullptr) &&
-                           arrays.colors.valid() == (cloud.getColors() != nullptr) && cloud.getPositions();
+                           arrays.colors.valid() == (cloud.getColors() != nullptr) &&
+                           arrays.semiAxes.valid() == (cloud.getSemiAxes() != nullptr) &&
+                           arrays.orientations.valid() == (cloud.getOrientations() != nullptr) &&
+                           cloud.getPositions();
     if (!sameKinds)
     {
         error = frameName(data) + ": the cloud was not made by this mapping";
@@ -540,6 +584,8 @@ bool GlyphMapper::updateCloud(GlyphCloud& cloud, const PointData& data, std::str
     changed = replaceContents(cloud.getVectors(), arrays.vectors.get()) || changed;
     changed = replaceContents(cloud.getScalars(), arrays.scalars.get()) || changed;
     changed = replaceContents(cloud.getColors(), arrays.colors.get()) || changed;
+    changed = replaceContents(cloud.getSemiAxes(), arrays.semiAxes.get()) || changed;
+    changed = replaceContents(cloud.getOrientations(), arrays.orientations.get()) || changed;
     if (changed)
         cloud.dirtyGlyphs();
     return true;
@@ -548,7 +594,42 @@ bool GlyphMapper::updateCloud(GlyphCloud& cloud, const PointData& data, std::str
 bool GlyphMapper::computeArrays(const PointData& data, FrameArrays& arrays, std::string& error) const
 {
     return computeRadii(data, arrays.radii, error) && computeVectors(data, arrays.vectors, error) &&
-           computeColors(data, arrays, error);
+           computeColors(data, arrays, error) && computeEllipsoids(data, arrays, error);
+}
+
+bool GlyphMapper::computeEllipsoids(const PointData& data, FrameArrays& arrays, std::string& error) const
+{
+    if (_semiAxisColumns.empty())
+        return true;
+    ColumnValues axes[3];
+    if (!getColumnTriple(data, _semiAxisColumns, axes))
+    {
+        error = missingColumn(option("glyph") + " ellipsoid", joinColumns(_semiAxisColumns), data);
+        return false;
+    }
+    const std::size_t n = data.getNumPoints();
+    arrays.semiAxes = new osg::Vec3Array(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        osg::Vec3& a = (*arrays.semiAxes)[i];
+        a.set((*axes[0])[i], (*axes[1])[i], (*axes[2])[i]);
+        a *= _semiAxisFactor;
+        if (a == osg::Vec3())
+            a.set(_radius, _radius, _radius); // a point particle
+    }
+    if (_rotationColumns.empty())
+        return true;
+    ColumnValues q[4];
+    for (int k = 0; k < 4; ++k)
+        if (!q[k].assign(data, _rotationColumns[k]))
+        {
+            error = missingColumn(option("glyph") + " ellipsoid", _rotationColumns[k], data);
+            return false;
+        }
+    arrays.orientations = new osg::Vec4Array(n);
+    for (std::size_t i = 0; i < n; ++i)
+        (*arrays.orientations)[i].set((*q[0])[i], (*q[1])[i], (*q[2])[i], (*q[3])[i]);
+    return true;
 }
 
 bool GlyphMapper::computeRadii(const PointData& data, osg::ref_ptr<osg::FloatArray>& radii,
@@ -573,7 +654,7 @@ bool GlyphMapper::computeRadii(const PointData& data, osg::ref_ptr<osg::FloatArr
 bool GlyphMapper::computeVectors(const PointData& data, osg::ref_ptr<osg::Vec3Array>& vectors,
                                  std::string& error) const
 {
-    if (_options.shape == GlyphShape::Sphere)
+    if (!osgGlyphs::isVectorShape(_options.shape))
         return true;
     ColumnValues v[3];
     if (!getColumnTriple(data, _vectorColumns, v))
@@ -660,8 +741,12 @@ std::string GlyphMapper::describe() const
         text += ", covalent radii";
     else
         text += ", radius " + formatNumber(_radius);
-    if (_options.shape != GlyphShape::Sphere)
+    if (osgGlyphs::isVectorShape(_options.shape))
         text += ", vectors " + joinColumns(_vectorColumns) + " x " + formatNumber(_lengthScale);
+    if (!_semiAxisColumns.empty())
+        text += ", ellipsoids of semi-axes " + joinColumns(_semiAxisColumns) +
+                (_semiAxisFactor != 1.0f ? " x " + formatNumber(_semiAxisFactor) : std::string()) +
+                (_rotationColumns.empty() ? std::string() : " turned by " + joinColumns(_rotationColumns));
     return text;
 }
 
@@ -769,7 +854,9 @@ void setRange(GlyphMappingOptions& options, const std::string&, const std::strin
 void setShape(GlyphMappingOptions& options, const std::string&, const std::string& value, std::string& error)
 {
     if (!parseShape(value, options.shape))
-        error = "'" + value + "': unknown shape (sphere, cone, arrow, cylinder)";
+        error = "'" + value + "': unknown shape (sphere, cone, arrow, cylinder, ellipsoid)";
+    else
+        options.shapeGiven = true;
 }
 
 void setTechnique(GlyphMappingOptions& options, const std::string&, const std::string& value,

@@ -65,8 +65,10 @@ void osgGlyphsData::describeGlyphMappingArguments(osg::ApplicationUsage& usage)
                                                       "(default vx,vy,vz, then velo_*, velocity_*).");
     usage.addCommandLineOption("--length-scale <s>", "Vector glyph length per unit of vector length "
                                                      "(default: the mean vector is 4 radii long).");
-    usage.addCommandLineOption("--glyph <shape>", "sphere (default), cone, arrow or cylinder; all but "
-                                                  "sphere point along the vectors.");
+    usage.addCommandLineOption("--glyph <shape>",
+                               "sphere (default), cone, arrow, cylinder or ellipsoid (the default "
+                               "where the data has ellipsoids' shape columns); cones, arrows "
+                               "and cylinders point along the vectors.");
     usage.addCommandLineOption("--unlit", "Flat colours instead of lit glyphs (key l toggles).");
     usage.addCommandLineOption("--technique <name>",
                                "How glyphs are drawn: " + joinNames(osgGlyphs::getTechniqueNames()) +

@@ -100,7 +100,7 @@ osg::ref_ptr<GlyphCloud> osgGlyphsData::createRandomCloud(const RandomCloudOptio
     cloud->setRadius(radius);
     cloud->setScalars(createScalars(range, options.seed).get());
     cloud->setScalarRange(0.0f, 1.0f);
-    if (options.shape != GlyphShape::Sphere)
+    if (isVectorShape(options.shape))
     {
         cloud->setVectors(createVectors(range, options.seed).get());
         cloud->setLengthScale(options.lengthScale > 0.0f ? options.lengthScale : 4.0f * radius);

@@ -123,7 +123,7 @@ TileBuilder::TileBuilder(const GlyphCloud& style, const TileOptions& options)
         _style->setScalars(new osg::FloatArray);
     else if (_style->getColorMode() == GlyphColorMode::RGBA)
         _style->setColors(new osg::Vec4ubArray);
-    _style->setVectors(_style->getShape() == osgGlyphs::GlyphShape::Sphere ? nullptr : new osg::Vec3Array);
+    _style->setVectors(!osgGlyphs::isVectorShape(_style->getShape()) ? nullptr : new osg::Vec3Array);
     _style->setSelection({});
     _style->setOcclusion(nullptr);
     _style->setCulling(osgGlyphs::GlyphCulling::Occlusion); // the default, whatever the style's
@@ -153,11 +153,16 @@ bool TileBuilder::addGlyphs(const GlyphCloud& cloud, std::string& error)
     const osg::Vec3Array* positions = cloud.getPositions();
     const std::size_t count = positions ? positions->size() : 0;
     const GlyphColorMode mode = _style->getColorMode();
-    const bool vectors = _style->getShape() != osgGlyphs::GlyphShape::Sphere;
+    const bool vectors = osgGlyphs::isVectorShape(_style->getShape());
     const osg::FloatArray* radii = cloud.getRadii();
     const osg::FloatArray* scalars = cloud.getScalars();
     const osg::Vec4ubArray* colors = cloud.getColors();
     const osg::Vec3Array* vectorArray = cloud.getVectors();
+    if (_style->getShape() == osgGlyphs::GlyphShape::Ellipsoid)
+    {
+        error = "tiles do not hold ellipsoids yet (their semi-axes and turns): choose another glyph shape";
+        return false;
+    }
     if (cloud.getColorMode() != mode)
     {
         error = "the glyphs' colours are not of the kind of the tiles' style";

@@ -69,6 +69,8 @@ GlyphArrays DrawnArrays::update(const GlyphArrays& source, const std::shared_ptr
     drawn.colors = static_cast<osg::Vec4ubArray*>(gather(_colors, source.colors, orderChanged));
     drawn.vectors = static_cast<osg::Vec3Array*>(gather(_vectors, source.vectors, orderChanged));
     drawn.occlusion = static_cast<osg::Vec4ubArray*>(gather(_occlusion, source.occlusion, orderChanged));
+    drawn.axes = gather(_axes, source.axes, orderChanged);
+    drawn.orientations = gather(_orientations, source.orientations, orderChanged);
     drawn.count = static_cast<unsigned int>(chunks->ids.size());
     return drawn;
 }

@@ -48,7 +48,7 @@ private:
 
     osg::Array* gather(Copy& copy, const osg::Array* source, bool orderChanged);
 
-    Copy _positions, _radiusScalar, _colors, _vectors, _occlusion;
+    Copy _positions, _radiusScalar, _colors, _vectors, _occlusion, _axes, _orientations;
     std::shared_ptr<const GlyphChunks> _chunks;
     bool _reordered = false;
 };

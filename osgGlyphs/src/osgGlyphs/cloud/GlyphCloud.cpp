@@ -39,7 +39,8 @@ GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
     : osg::Geometry(other, copyop), _origin(other._origin), _positions(copyArray(other._positions, copyop)),
       _radii(copyArray(other._radii, copyop)), _colors(copyArray(other._colors, copyop)),
       _scalars(copyArray(other._scalars, copyop)), _vectors(copyArray(other._vectors, copyop)),
-      _occlusion(copyArray(other._occlusion, copyop)), _colorMap(other._colorMap),
+      _occlusion(copyArray(other._occlusion, copyop)), _semiAxes(copyArray(other._semiAxes, copyop)),
+      _orientations(copyArray(other._orientations, copyop)), _colorMap(other._colorMap),
       _technique(other._technique.valid() ? static_cast<GlyphTechnique*>(copyop(other._technique.get()))
                                           : nullptr),
       _radius(other._radius), _color(other._color), _colorMode(other._colorMode), _shape(other._shape),
@@ -66,6 +67,11 @@ void GlyphCloud::initialize()
     _packed->setPreserveDataType(true); // an integer attribute: glVertexAttribIPointer
     _unpacked = new osg::Vec2Array;
     _quantisedPositions = new osg::Vec3sArray;
+    _ellipsoidRadii = new osg::FloatArray;
+    _packedAxes = new osg::Vec4usArray;
+    _packedAxes->setNormalize(true);
+    _packedRotations = new osg::Vec4sArray;
+    _packedRotations->setNormalize(true);
     _drawnArrays = std::make_shared<detail::DrawnArrays>();
     // The cloud's own values, in a StateSet of its own: each copy gets its own.
     _cloudStateSet = new osg::StateSet;
@@ -168,7 +174,8 @@ void GlyphCloud::setShape(GlyphShape shape)
     if (shape == _shape)
         return;
     _shape = shape;
-    _packedVectors = PackedSource(); // vectors count for vector shapes only
+    _packedVectors = PackedSource(); // vectors count for vector shapes only, semi-axes for ellipsoids
+    _packedSemiAxes = PackedSource();
     dirtyGlyphs();
     updateStateSet();
 }
@@ -190,6 +197,18 @@ const GlyphTechnique* GlyphCloud::getEffectiveTechnique() const
 void GlyphCloud::setVectors(osg::Vec3Array* vectors)
 {
     _vectors = vectors;
+    dirtyGlyphs();
+}
+
+void GlyphCloud::setSemiAxes(osg::Vec3Array* semiAxes)
+{
+    _semiAxes = semiAxes;
+    dirtyGlyphs();
+}
+
+void GlyphCloud::setOrientations(osg::Vec4Array* orientations)
+{
+    _orientations = orientations;
     dirtyGlyphs();
 }
 
@@ -417,8 +436,11 @@ void GlyphCloud::sortSpatially()
          {static_cast<osg::Array*>(_positions.get()), static_cast<osg::Array*>(_radii.get()),
           static_cast<osg::Array*>(_colors.get()), static_cast<osg::Array*>(_scalars.get()),
           static_cast<osg::Array*>(_vectors.get()), static_cast<osg::Array*>(_occlusion.get()),
+          static_cast<osg::Array*>(_semiAxes.get()), static_cast<osg::Array*>(_orientations.get()),
           static_cast<osg::Array*>(_packed.get()), static_cast<osg::Array*>(_unpacked.get()),
-          static_cast<osg::Array*>(_quantisedPositions.get())})
+          static_cast<osg::Array*>(_quantisedPositions.get()),
+          static_cast<osg::Array*>(_ellipsoidRadii.get()), static_cast<osg::Array*>(_packedAxes.get()),
+          static_cast<osg::Array*>(_packedRotations.get())})
     {
         if (!array || array->getNumElements() < _numGlyphs)
             continue;
@@ -432,9 +454,11 @@ void GlyphCloud::sortSpatially()
         skipped[k] = _skipped[order[k]];
     _skipped.swap(skipped);
     _packedPositions.set(_positions.get());
-    _packedRadii.set(_radii.get());
+    _packedRadii.set(getPackedRadiusSource());
     _packedScalars.set(_scalars.get());
     _packedVectors.set(hasVectorShape() ? _vectors.get() : nullptr);
+    _packedSemiAxes.set(hasEllipsoidShape() ? _semiAxes.get() : nullptr);
+    _packedOrientations.set(hasEllipsoidShape() ? _orientations.get() : nullptr);
     // The same chunks of the same glyphs, each now at its own index.
     auto sorted = std::make_shared<detail::GlyphChunks>(*_chunks);
     std::iota(sorted->ids.begin(), sorted->ids.end(), 0u);
@@ -504,6 +528,8 @@ GlyphArrays GlyphCloud::getGlyphArrays() const
     arrays.colors = _colorMode == GlyphColorMode::RGBA ? _colors.get() : nullptr;
     arrays.vectors = hasVectorShape() ? _vectors.get() : nullptr;
     arrays.occlusion = _occlusion.valid() && _occlusion->size() >= _numGlyphs ? _occlusion.get() : nullptr;
+    arrays.axes = hasEllipsoidShape() ? _packedAxes.get() : nullptr;
+    arrays.orientations = hasEllipsoidShape() ? _packedRotations.get() : nullptr;
     arrays.count = _numGlyphs;
     return arrays;
 }
@@ -522,8 +548,9 @@ void GlyphCloud::buildPrimitives()
     if (_drawnArrays->isReordered() || wasReordered)
         updateSelectionElements(); // the selection's pass draws from the drawn arrays
     const GlyphArrays& arrays = _drawn;
-    const auto builtFor = std::make_tuple(technique, arrays.positions, arrays.radiusScalar, arrays.colors,
-                                          arrays.vectors, arrays.occlusion, arrays.count);
+    const auto builtFor =
+        std::make_tuple(technique, arrays.positions, arrays.radiusScalar, arrays.colors, arrays.vectors,
+                        arrays.occlusion, arrays.axes, arrays.orientations, arrays.count);
     for (const auto& [define, on] :
          {std::make_pair(GLYPH_AMBIENT_OCCLUSION_DEFINE, arrays.occlusion != nullptr),
           std::make_pair(detail::COMPRESSED_POSITIONS_DEFINE, _compressedPositions)})

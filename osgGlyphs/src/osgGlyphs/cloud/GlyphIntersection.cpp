@@ -62,6 +62,14 @@ bool GlyphCloud::getGlyphSolid(unsigned int i, detail::GlyphSolid& solid) const
     solid.shape = _shape;
     solid.radius = radius;
     solid.base = glm::dvec3(p.x(), p.y(), p.z());
+    if (hasEllipsoidShape())
+    {
+        osg::Vec3 semiAxes[3];
+        decodeEllipsoid(i, semiAxes);
+        for (int k = 0; k < 3; ++k)
+            solid.semiAxes[k] = glm::dvec3(semiAxes[k].x(), semiAxes[k].y(), semiAxes[k].z());
+        return true;
+    }
     if (!hasVectorShape())
         return true;
     // decode.glsl: the axis along the vector, the tail placed by the anchor.

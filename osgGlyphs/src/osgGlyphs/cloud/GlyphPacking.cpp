@@ -5,6 +5,7 @@
 #include "PositionGrid.h"
 
 #include <osg/Notify>
+#include <osg/Quat>
 #include <osg/ValueObject>
 
 #include <algorithm>
@@ -23,14 +24,41 @@ enum SkipReason : uint8_t
     SKIP_RADIUS = 2,
     SKIP_SCALAR = 4,
     SKIP_VECTOR = 8,
-    SKIP_ZERO_VECTOR = 16
+    SKIP_ZERO_VECTOR = 16,
+    SKIP_SEMI_AXES = 32,
+    SKIP_ORIENTATION = 64
 };
 
+const int NUM_SKIP_REASONS = 7;
+
 const uint16_t HALF_ONE = 0x3c00;
+const osg::Vec4 IDENTITY_ROTATION(0.0f, 0.0f, 0.0f, 1.0f);
 
 bool isFinite(const osg::Vec3& v)
 {
     return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+}
+
+bool areValidSemiAxes(const osg::Vec3& a)
+{
+    return isFinite(a) && a.x() > 0.0f && a.y() > 0.0f && a.z() > 0.0f;
+}
+
+bool isValidRotation(const osg::Vec4& q)
+{
+    const float length = q.length();
+    return std::isfinite(length) && length > 0.0f;
+}
+
+/** A fraction in (0, 1] in 16 bits, at least one step, so that no semi-axis is drawn flat. */
+uint16_t toUnorm16(float fraction)
+{
+    return static_cast<uint16_t>(std::lround(std::clamp(fraction * 65535.0f, 1.0f, 65535.0f)));
+}
+
+int16_t toSnorm16(float value)
+{
+    return static_cast<int16_t>(std::lround(std::clamp(value, -1.0f, 1.0f) * 32767.0f));
 }
 
 }
@@ -73,6 +101,15 @@ unsigned int GlyphCloud::countGlyphs(bool report) const
         count = _vectors.valid() ? count : 0;
         limit(_vectors.get(), "vector");
     }
+    if (hasEllipsoidShape())
+    {
+        if (!_semiAxes.valid() && numPositions && report)
+            OSG_INFO << "osgGlyphs::GlyphCloud \"" << getName()
+                     << "\": ellipsoids without semi-axes; nothing is drawn" << std::endl;
+        count = _semiAxes.valid() ? count : 0;
+        limit(_semiAxes.get(), "semi-axis");
+        limit(_orientations.get(), "orientation");
+    }
     return static_cast<unsigned int>(count);
 }
 
@@ -81,18 +118,27 @@ void GlyphCloud::updateGlyphs(bool report)
     const unsigned int count = countGlyphs(report);
     const bool resized = count != _numGlyphs || _skipped.size() != count;
     const osg::Array* vectors = hasVectorShape() ? _vectors.get() : nullptr;
+    const osg::Array* semiAxes = hasEllipsoidShape() ? _semiAxes.get() : nullptr;
+    const osg::Array* orientations = hasEllipsoidShape() ? _orientations.get() : nullptr;
+    const bool ellipsoids =
+        resized || _packedSemiAxes.changedFrom(semiAxes) || _packedOrientations.changedFrom(orientations);
+    _packedSemiAxes.set(semiAxes);
+    _packedOrientations.set(orientations);
+    if (resized)
+        _numGlyphs = count;
+    if (ellipsoids)
+        packEllipsoids(); // before the radii: the largest semi-axes are the ellipsoids' radii
     const bool positions = resized || _packedPositions.changedFrom(_positions.get());
-    const bool radii = resized || _packedRadii.changedFrom(_radii.get());
+    const bool radii = resized || _packedRadii.changedFrom(getPackedRadiusSource());
     const bool scalars = resized || _packedScalars.changedFrom(_scalars.get());
     const bool vectorsChanged = resized || _packedVectors.changedFrom(vectors);
     _packedPositions.set(_positions.get());
-    _packedRadii.set(_radii.get());
+    _packedRadii.set(getPackedRadiusSource());
     _packedScalars.set(_scalars.get());
     _packedVectors.set(vectors);
 
     if (resized)
     {
-        _numGlyphs = count;
         _skipped.assign(count, 0);
         _packed->assign(count, 0u);
         _unpacked->assign(_compressedAttributes ? 0 : count, osg::Vec2());
@@ -102,7 +148,8 @@ void GlyphCloud::updateGlyphs(bool report)
         updateDataRange();
     if (radii)
         updateRadiusScale();
-    const std::vector<unsigned int> flipped = updateSkipped(positions, radii, scalars, vectorsChanged);
+    const std::vector<unsigned int> flipped =
+        updateSkipped(positions, radii, scalars, vectorsChanged, ellipsoids);
     if (radii)
         packRadii();
     else if (!flipped.empty())
@@ -116,15 +163,16 @@ void GlyphCloud::updateGlyphs(bool report)
         packScalars();
     if (positions)
         packPositions();
-    if (report && (positions || radii || scalars || vectorsChanged))
+    if (report && (positions || radii || scalars || vectorsChanged || ellipsoids))
         reportSkipped();
     updateScalarMapping();
-    if (positions || radii || vectorsChanged || !flipped.empty())
+    if (positions || radii || vectorsChanged || ellipsoids || !flipped.empty())
         updateChunks();
     buildPrimitives();
 }
 
-std::vector<unsigned int> GlyphCloud::updateSkipped(bool positions, bool radii, bool scalars, bool vectors)
+std::vector<unsigned int> GlyphCloud::updateSkipped(bool positions, bool radii, bool scalars, bool vectors,
+                                                    bool ellipsoids)
 {
     std::vector<unsigned int> flipped;
     // Sets or clears one reason for every glyph; notes the glyphs that became drawn or skipped.
@@ -141,7 +189,8 @@ std::vector<unsigned int> GlyphCloud::updateSkipped(bool positions, bool radii, 
     };
     if (positions)
         update(SKIP_POSITION, [&](unsigned int i) { return !isFinite((*_positions)[i]); });
-    if (radii && _radii.valid())
+    // An ellipsoid's radius is its largest semi-axis, which SKIP_SEMI_AXES checks.
+    if (radii && _radii.valid() && !hasEllipsoidShape())
         update(SKIP_RADIUS,
                [&](unsigned int i) { return !(std::isfinite((*_radii)[i]) && (*_radii)[i] > 0.0f); });
     else if (radii)
@@ -156,6 +205,14 @@ std::vector<unsigned int> GlyphCloud::updateSkipped(bool positions, bool radii, 
     }
     else if (vectors)
         update(SKIP_VECTOR | SKIP_ZERO_VECTOR, [](unsigned int) { return false; });
+    if (ellipsoids && hasEllipsoidShape())
+    {
+        update(SKIP_SEMI_AXES, [&](unsigned int i) { return !areValidSemiAxes((*_semiAxes)[i]); });
+        update(SKIP_ORIENTATION, [&](unsigned int i)
+               { return _orientations.valid() && !isValidRotation((*_orientations)[i]); });
+    }
+    else if (ellipsoids)
+        update(SKIP_SEMI_AXES | SKIP_ORIENTATION, [](unsigned int) { return false; });
     _numSkipped =
         static_cast<unsigned int>(_numGlyphs - std::count(_skipped.begin(), _skipped.end(), uint8_t(0)));
     return flipped;
@@ -175,9 +232,10 @@ GlyphCloud::PackingScales GlyphCloud::getOwnPackingScales() const
             scales.scalarMax = std::max(scales.scalarMax, s);
         }
     }
-    for (unsigned int i = 0; _radii.valid() && i < _numGlyphs; ++i)
-        if (std::isfinite((*_radii)[i]))
-            scales.largestRadius = std::max(scales.largestRadius, (*_radii)[i]);
+    const osg::FloatArray* radii = getPackedRadiusSource();
+    for (unsigned int i = 0; radii && i < _numGlyphs; ++i)
+        if (std::isfinite((*radii)[i]))
+            scales.largestRadius = std::max(scales.largestRadius, (*radii)[i]);
     return scales;
 }
 
@@ -227,12 +285,12 @@ void GlyphCloud::updateRadiusScale()
 {
     // Radii are stored relative to the largest, which keeps half floats precise at any scale.
     _radiusScale = _radius;
-    if (_radii.valid())
+    if (const osg::FloatArray* radii = getPackedRadiusSource())
     {
         _radiusScale = 0.0f;
         for (unsigned int i = 0; i < _numGlyphs; ++i)
-            if (std::isfinite((*_radii)[i]))
-                _radiusScale = std::max(_radiusScale, (*_radii)[i]);
+            if (std::isfinite((*radii)[i]))
+                _radiusScale = std::max(_radiusScale, (*radii)[i]);
         if (_hasSharedScales)
             _radiusScale = _sharedScales.largestRadius;
     }
@@ -259,9 +317,10 @@ bool GlyphCloud::updateQuantisationRange()
 void GlyphCloud::packRadius(unsigned int i)
 {
     const bool radiusValid = _radiusScale > 0.0f && _radiusScale <= std::numeric_limits<float>::max();
-    const float relative = _radii.valid() ? (*_radii)[i] / _radiusScale : 1.0f;
+    const osg::FloatArray* radii = getPackedRadiusSource();
+    const float relative = radii ? (*radii)[i] / _radiusScale : 1.0f;
     const bool drawn = radiusValid && _skipped[i] == 0;
-    const uint16_t half = !drawn ? 0 : _radii.valid() ? detail::toHalf(relative) : HALF_ONE;
+    const uint16_t half = !drawn ? 0 : radii ? detail::toHalf(relative) : HALF_ONE;
     uint32_t& word = (*_packed)[i];
     word = (word & 0xffff0000u) | half;
     if (!_compressedAttributes)
@@ -321,10 +380,10 @@ void GlyphCloud::packScalars()
 
 void GlyphCloud::reportSkipped() const
 {
-    unsigned int counts[5] = {0, 0, 0, 0, 0};
+    unsigned int counts[NUM_SKIP_REASONS] = {};
     if (_numSkipped > 0)
         for (uint8_t flags : _skipped)
-            for (int bit = 0; flags != 0 && bit < 5; ++bit)
+            for (int bit = 0; flags != 0 && bit < NUM_SKIP_REASONS; ++bit)
                 counts[bit] += (flags >> bit) & 1u;
     const bool radiusValid = std::isfinite(_radiusScale) && _radiusScale > 0.0f;
     auto report = [&](unsigned int bad, const char* problem)
@@ -337,6 +396,8 @@ void GlyphCloud::reportSkipped() const
     report(radiusValid ? counts[1] : _numGlyphs, "have a radius that is not finite and > 0");
     report(counts[2], "have a non-finite scalar (NaN or inf)");
     report(counts[3], "have a non-finite vector (NaN or inf)");
+    report(counts[5], "have semi-axes that are not all finite and > 0");
+    report(counts[6], "have an orientation quaternion that is zero or not finite");
     if (counts[4])
         OSG_INFO << "osgGlyphs::GlyphCloud \"" << getName() << "\": " << counts[4] << " of " << _numGlyphs
                  << " glyphs have a zero vector and no direction; they are not drawn" << std::endl;
@@ -352,6 +413,55 @@ void GlyphCloud::updateScalarMapping()
         mapping.set(static_cast<float>((double(_quantisedMax) - _quantisedMin) / span),
                     static_cast<float>((double(_quantisedMin) - _rangeMin) / span));
     _scalarToColormapUniform->set(mapping);
+}
+
+void GlyphCloud::packEllipsoids()
+{
+    const unsigned int count = hasEllipsoidShape() ? _numGlyphs : 0;
+    _ellipsoidRadii->resize(count);
+    _packedAxes->resize(count);
+    _packedRotations->resize(count);
+    for (unsigned int i = 0; i < count; ++i)
+    {
+        const osg::Vec3& a = (*_semiAxes)[i];
+        const bool valid = areValidSemiAxes(a);
+        const float largest = valid ? std::max(a.x(), std::max(a.y(), a.z())) : 0.0f;
+        (*_ellipsoidRadii)[i] = largest;
+        (*_packedAxes)[i] = valid ? osg::Vec4us(toUnorm16(a.x() / largest), toUnorm16(a.y() / largest),
+                                                toUnorm16(a.z() / largest), 0)
+                                  : osg::Vec4us();
+        osg::Vec4 q = _orientations.valid() ? (*_orientations)[i] : IDENTITY_ROTATION;
+        if (!isValidRotation(q))
+        {
+            (*_packedRotations)[i] = osg::Vec4s();
+            continue;
+        }
+        q /= q.length();
+        if (q.w() < 0.0f)
+            q = -q; // the same rotation
+        (*_packedRotations)[i] =
+            osg::Vec4s(toSnorm16(q.x()), toSnorm16(q.y()), toSnorm16(q.z()), toSnorm16(q.w()));
+    }
+    _ellipsoidRadii->dirty();
+    _packedAxes->dirty();
+    _packedRotations->dirty();
+}
+
+void GlyphCloud::decodeEllipsoid(unsigned int i, osg::Vec3 semiAxes[3]) const
+{
+    // decode.glsl: normalised 16-bit values, the quaternion normalised again.
+    const osg::Vec4us& a = (*_packedAxes)[i];
+    const osg::Vec4s& r = (*_packedRotations)[i];
+    osg::Quat q(std::max(r.x() / 32767.0, -1.0), std::max(r.y() / 32767.0, -1.0),
+                std::max(r.z() / 32767.0, -1.0), std::max(r.w() / 32767.0, -1.0));
+    q /= q.length();
+    const float radius = decodeRadius(i);
+    for (int k = 0; k < 3; ++k)
+    {
+        osg::Vec3 body;
+        body[k] = radius * (a[k] / 65535.0f);
+        semiAxes[k] = q * body;
+    }
 }
 
 float GlyphCloud::decodeRadius(unsigned int i) const
@@ -398,6 +508,20 @@ osg::BoundingBox GlyphCloud::computeGlyphBox(unsigned int i) const
     const float radius = decoded * widest;
     const osg::Vec3 pad(radius, radius, radius);
     const osg::Vec3 p = drawnPosition(i);
+    if (hasEllipsoidShape())
+    {
+        // The extent along each of the cloud's axes: the length of that row of the semi-axes.
+        osg::Vec3 semiAxes[3];
+        decodeEllipsoid(i, semiAxes);
+        osg::Vec3 extent;
+        for (int row = 0; row < 3; ++row)
+            extent[row] =
+                std::sqrt(semiAxes[0][row] * semiAxes[0][row] + semiAxes[1][row] * semiAxes[1][row] +
+                          semiAxes[2][row] * semiAxes[2][row]);
+        box.expandBy(p - extent);
+        box.expandBy(p + extent);
+        return box;
+    }
     if (!hasVectorShape())
     {
         box.expandBy(p - pad);

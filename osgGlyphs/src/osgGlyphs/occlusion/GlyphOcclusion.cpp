@@ -159,7 +159,7 @@ double profileRadius(const detail::GlyphSolid& glyph, double s)
 /** The glyph as occluding spheres: itself, or a chain along a vector glyph's axis. */
 void addOccluders(const detail::GlyphSolid& glyph, unsigned int owner, std::vector<Sphere>& spheres)
 {
-    if (glyph.shape == GlyphShape::Sphere)
+    if (!isVectorShape(glyph.shape))
     {
         spheres.push_back(
             {float(glyph.base.x), float(glyph.base.y), float(glyph.base.z), float(glyph.radius), owner});
@@ -182,7 +182,7 @@ void addOccluders(const detail::GlyphSolid& glyph, unsigned int owner, std::vect
 Receiver makeReceiver(const detail::GlyphSolid& glyph, unsigned int index)
 {
     const float radius = float(glyph.radius);
-    if (glyph.shape == GlyphShape::Sphere)
+    if (!isVectorShape(glyph.shape))
         return {glm::vec3(glyph.base), radius, glm::vec3(0.0f, 0.0f, 1.0f), 0.0f, radius, index};
     const double widest =
         glyph.shape == GlyphShape::Arrow ? glyph.radius * std::max(glyph.arrowParams.y, 1.0) : glyph.radius;

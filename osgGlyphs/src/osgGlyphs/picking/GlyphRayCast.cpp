@@ -2,6 +2,7 @@
 #include "GlyphRayCast.h"
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -30,6 +31,27 @@ bool intersectSphere(const dvec3& origin, const dvec3& direction, const dvec3& c
     const double h = std::sqrt(h2);
     tEnter = -b - h;
     tLeave = -b + h;
+    return true;
+}
+
+/** ellipsoid.glsl: where the ray meets the ellipsoid x = centre + A u, |u| <= 1, in the frame where it
+ * is the unit sphere (u = A^-1 (x - centre)), and the unit normals there; false if it misses. */
+bool intersectEllipsoid(const dvec3& origin, const dvec3& direction, const dvec3& centre,
+                        const glm::dmat3& semiAxes, double& tEnter, double& tLeave, dvec3& nEnter,
+                        dvec3& nLeave)
+{
+    const glm::dmat3 inverse = glm::inverse(semiAxes);
+    const dvec3 o = inverse * (origin - centre), d = inverse * direction;
+    const double a = glm::dot(d, d), b = glm::dot(o, d);
+    const dvec3 closest = o - (b / a) * d;
+    const double h2 = 1.0 - glm::dot(closest, closest);
+    if (h2 < 0.0)
+        return false;
+    const double h = std::sqrt(h2 / a);
+    tEnter = -b / a - h;
+    tLeave = -b / a + h;
+    nEnter = glm::normalize(glm::transpose(inverse) * (o + d * tEnter));
+    nLeave = glm::normalize(glm::transpose(inverse) * (o + d * tLeave));
     return true;
 }
 
@@ -159,6 +181,18 @@ bool osgGlyphs::detail::castRay(const GlyphSolid& glyph, const dvec3& origin, co
             return false;
         t = std::max(tEnter, 0.0);
         normal = tEnter >= 0.0 ? (origin + direction * t - glyph.base) / glyph.radius : -direction;
+        return true;
+    }
+    if (glyph.shape == GlyphShape::Ellipsoid)
+    {
+        double tEnter, tLeave;
+        dvec3 nEnter, nLeave;
+        if (!intersectEllipsoid(origin, direction, glyph.base, glyph.semiAxes, tEnter, tLeave, nEnter,
+                                nLeave) ||
+            tLeave < 0.0)
+            return false;
+        t = std::max(tEnter, 0.0);
+        normal = tEnter >= 0.0 ? nEnter : -direction;
         return true;
     }
     dvec3 u, v;

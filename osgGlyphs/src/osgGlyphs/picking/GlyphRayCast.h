@@ -1,13 +1,14 @@
 /* osgGlyphs - private: a glyph's exact surface met by a ray on the CPU, for picking. Not installed.
  *
- * The functions mirror shaders/osgGlyphs/impostor.frag, sphere.glsl and vector.glsl, name for name,
- * in double precision: a pick returns the surface the fragment shader draws. */
+ * The functions mirror shaders/osgGlyphs/impostor.frag, sphere.glsl, vector.glsl and ellipsoid.glsl, name for
+ * name, in double precision: a pick returns the surface the fragment shader draws. */
 
 #ifndef OSGGLYPHS_GLYPHRAYCAST_H
 #define OSGGLYPHS_GLYPHRAYCAST_H 1
 
 #include <osgGlyphs/GlyphStyle>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -25,6 +26,7 @@ struct GlyphSolid
     glm::dvec3 axis = glm::dvec3(0.0, 0.0, 1.0);   // vector glyphs: unit axis
     double length = 0.0;                           // vector glyphs: tail to apex or head tip
     glm::dvec2 arrowParams = glm::dvec2(0.3, 2.0); // head length / length, head radius / radius
+    glm::dmat3 semiAxes = glm::dmat3(1.0);         // ellipsoids: the semi-axes as columns
 };
 
 /** The nearest surface point along origin + t * direction (unit direction), t >= 0, and its unit

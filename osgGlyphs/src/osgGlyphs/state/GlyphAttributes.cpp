@@ -31,6 +31,9 @@ std::vector<GlyphAttributeBinding> osgGlyphs::getGlyphAttributeBindings(GlyphAtt
     bindings.push_back({"osgGlyphs_vector", VECTOR_ATTRIBUTE, "vec3", defined(detail::VECTOR_SHAPE_DEFINE)});
     bindings.push_back(
         {"osgGlyphs_ambientOcclusion", OCCLUSION_ATTRIBUTE, "vec4", defined(GLYPH_AMBIENT_OCCLUSION_DEFINE)});
+    bindings.push_back({"osgGlyphs_axes", AXES_ATTRIBUTE, "vec4", defined(detail::ELLIPSOID_SHAPE_DEFINE)});
+    bindings.push_back(
+        {"osgGlyphs_orientation", ORIENTATION_ATTRIBUTE, "vec4", defined(detail::ELLIPSOID_SHAPE_DEFINE)});
     return bindings;
 }
 
@@ -50,6 +53,8 @@ void osgGlyphs::attachGlyphArrays(osg::Geometry& geometry, const GlyphArrays& ar
     attach(COLOR_ATTRIBUTE, arrays.colors);
     attach(VECTOR_ATTRIBUTE, arrays.vectors);
     attach(OCCLUSION_ATTRIBUTE, arrays.occlusion);
+    attach(AXES_ATTRIBUTE, arrays.axes);
+    attach(ORIENTATION_ATTRIBUTE, arrays.orientations);
 }
 
 void osgGlyphs::setInstancedGlyphAttributes(osg::StateSet& stateSet)

@@ -21,6 +21,7 @@ const char* const osgGlyphs::detail::COMPRESSED_POSITIONS_DEFINE = "OSGGLYPHS_CO
 const char* const osgGlyphs::detail::CLIP_PLANES_DEFINE = "OSGGLYPHS_CLIP_PLANES";
 // Follows from the shape defines in the generated GLSL: never set by a StateSet.
 const char* const osgGlyphs::detail::VECTOR_SHAPE_DEFINE = "OSGGLYPHS_VECTOR_SHAPE";
+const char* const osgGlyphs::detail::ELLIPSOID_SHAPE_DEFINE = "OSGGLYPHS_SHAPE_ELLIPSOID";
 
 namespace
 {
@@ -28,7 +29,8 @@ namespace
 const std::pair<GlyphShape, const char*> SHAPE_DEFINES[] = {
     {GlyphShape::Cone, "OSGGLYPHS_SHAPE_CONE"},
     {GlyphShape::Arrow, "OSGGLYPHS_SHAPE_ARROW"},
-    {GlyphShape::Cylinder, "OSGGLYPHS_SHAPE_CYLINDER"}};
+    {GlyphShape::Cylinder, "OSGGLYPHS_SHAPE_CYLINDER"},
+    {GlyphShape::Ellipsoid, detail::ELLIPSOID_SHAPE_DEFINE}};
 
 const std::pair<GlyphColorMode, const char*> COLOR_DEFINES[] = {
     {GlyphColorMode::RGBA, detail::COLOR_RGBA_DEFINE}, {GlyphColorMode::Scalar, "OSGGLYPHS_COLOR_SCALAR"}};
@@ -83,8 +85,13 @@ std::string osgGlyphs::detail::generateDefinesGlsl()
     for (std::size_t i = 0; i < all.size(); ++i)
         glsl << (i ? ", " : "") << all[i];
     glsl << ")\n#if ";
-    for (std::size_t i = 0; i < std::size(SHAPE_DEFINES); ++i)
-        glsl << (i ? " || " : "") << "defined(" << SHAPE_DEFINES[i].second << ")";
+    const char* separator = "";
+    for (const auto& [shape, define] : SHAPE_DEFINES)
+        if (isVectorShape(shape))
+        {
+            glsl << separator << "defined(" << define << ")";
+            separator = " || ";
+        }
     glsl << "\n#define " << VECTOR_SHAPE_DEFINE << " 1\n#endif\n";
     return glsl.str();
 }

@@ -181,7 +181,8 @@ public:
                        "One frame of a multi-frame file, or all of them in a loop (default: all "
                        "of a file of at most " +
                            std::to_string(MAX_DEFAULT_SEQUENCE_FRAMES) + " frames, else frame 0)");
-        supportsOption("glyph=<shape>", "sphere (default), cone, arrow or cylinder");
+        supportsOption("glyph=<shape>",
+                       "sphere (default), cone, arrow, cylinder or ellipsoid (default for ellipsoid data)");
         supportsOption("color=<column>|speed", "Colour through the colour map by a column (also color-by)");
         supportsOption("colormap=<name>|<file>", "viridis (default), magma, cividis, coolwarm, grayscale");
         supportsOption("range=<min>,<max>", "Colour range instead of the data's");
