@@ -149,8 +149,8 @@ bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
                    settings.techniques))
         return false;
     if (arguments.read("--shapes", text) &&
-        !parseList(arguments, "--shapes", text, "sphere, cone, arrow, cylinder", osgGlyphs::parseShape,
-                   settings.shapes))
+        !parseList(arguments, "--shapes", text, "sphere, cone, arrow, cylinder, ellipsoid",
+                   osgGlyphs::parseShape, settings.shapes))
         return false;
     if (arguments.read("--n", text) &&
         !parseList(arguments, "--n", text, "positive integers", parseCount, settings.counts))

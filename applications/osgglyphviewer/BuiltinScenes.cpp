@@ -50,10 +50,11 @@ osg::ref_ptr<ViewerScene> createDefaultScene(const ViewerOptions& options, std::
 {
     if (!checkNoColumnOptions(options.mapping, "built-in", error))
         return nullptr;
-    if (osgGlyphs::isVectorShape(options.mapping.shape))
+    if (options.mapping.shape != osgGlyphs::GlyphShape::Sphere)
     {
-        error = std::string("--glyph ") + osgGlyphs::getShapeName(options.mapping.shape) +
-                " needs vectors, and the built-in scene has none (try --random N)";
+        const bool vectors = osgGlyphs::isVectorShape(options.mapping.shape);
+        error = std::string("--glyph ") + osgGlyphs::getShapeName(options.mapping.shape) + " needs " +
+                (vectors ? "vectors" : "semi-axes") + ", and the built-in scene has none (try --random N)";
         return nullptr;
     }
     const unsigned int count = 2000;

@@ -2,6 +2,7 @@
 
 #include "NeighbourDistance.h"
 #include "PointColumns.h"
+#include "SymmetricTensor.h"
 
 #include <osgGlyphsData/Elements>
 
@@ -50,6 +51,12 @@ const float SHAPE_FACTORS[] = {0.5f, 1.0f};
 const std::vector<std::vector<std::string>> ROTATION_CANDIDATES = {
     {"quati", "quatj", "quatk", "quatw"},
     {"Orientation.X", "Orientation.Y", "Orientation.Z", "Orientation.W"}};
+
+/** What --color-by names of a tensor, in the order of TensorQuantity. */
+const char* const TENSOR_QUANTITIES[] = {"trace", "anisotropy", "eigenvalue1", "eigenvalue2", "eigenvalue3"};
+
+/** The smallest semi-axis of a tensor's glyph, as a fraction of the default radius. */
+const float TENSOR_FLOOR = 0.05f;
 
 /** Colour columns, as PLY files name them. */
 const std::vector<std::string> RGB_COLUMNS = {"red", "green", "blue"};
@@ -139,9 +146,11 @@ bool GlyphMapper::prepare(const PointDataset& dataset, std::size_t startFrame, s
     computeBounds(positions);
     _positionOrigin = origin;
     computeSizes(*data, positions);
+    if (!computeTensorScale(*data, error))
+        return false;
 
     _key = ColorKey();
-    if (_colorSource == ColorSource::Column || _colorSource == ColorSource::Speed)
+    if (usesScalars())
     {
         _key.kind = ColorKey::Scalar;
         _key.title = _colorSource == ColorSource::Speed ? "speed" : _colorColumn;
@@ -158,6 +167,23 @@ bool GlyphMapper::resolveEllipsoids(const PointData& data, std::string& error)
 {
     _semiAxisColumns.clear();
     _rotationColumns.clear();
+    if (!_options.tensorColumns.empty())
+    {
+        for (const std::string& column : _options.tensorColumns)
+            if (!data.hasColumn(column))
+            {
+                error = missingColumn(option("tensor"), column, data);
+                return false;
+            }
+        if (_options.shapeGiven && _options.shape != GlyphShape::Ellipsoid)
+        {
+            error = option("tensor") + " draws ellipsoids, not " + option("glyph") + " " +
+                    getShapeName(_options.shape);
+            return false;
+        }
+        _options.shape = GlyphShape::Ellipsoid;
+        return true;
+    }
     const int shape = findColumnTriple(data, SHAPE_CANDIDATES);
     if (shape >= 0 && !_options.shapeGiven)
         _options.shape = GlyphShape::Ellipsoid;
@@ -217,7 +243,15 @@ bool GlyphMapper::resolveColor(const PointData& data, std::string& error)
     const std::string& by = _options.colorBy;
     ColumnValues rgb[3];
     _colorColumn.clear();
-    if (by == "speed" && !data.hasColumn(by))
+    const auto quantity = std::find(std::begin(TENSOR_QUANTITIES), std::end(TENSOR_QUANTITIES), by);
+    if (!_options.tensorColumns.empty() && (by.empty() || quantity != std::end(TENSOR_QUANTITIES)))
+    {
+        _colorSource = ColorSource::Tensor;
+        _tensorQuantity =
+            by.empty() ? TensorQuantity::Trace : TensorQuantity(quantity - std::begin(TENSOR_QUANTITIES));
+        _colorColumn = TENSOR_QUANTITIES[int(_tensorQuantity)];
+    }
+    else if (by == "speed" && !data.hasColumn(by))
     {
         if (_vectorColumns.empty())
         {
@@ -261,8 +295,100 @@ bool GlyphMapper::resolveColor(const PointData& data, std::string& error)
     return true;
 }
 
+bool GlyphMapper::readTensors(const PointData& data, std::vector<double>& components,
+                              std::string& error) const
+{
+    const std::size_t width = _options.tensorColumns.size(), n = data.getNumPoints();
+    components.assign(n * 6, 0.0);
+    for (std::size_t k = 0; k < width; ++k)
+    {
+        const int index = data.findColumn(_options.tensorColumns[k]);
+        if (index < 0)
+        {
+            error = missingColumn(option("tensor"), _options.tensorColumns[k], data);
+            return false;
+        }
+        // Row by row into xx yy zz xy xz yz, the off-diagonal pairs averaged.
+        static const int SLOT_OF_ROWS[9] = {0, 3, 4, 3, 1, 5, 4, 5, 2};
+        const bool diagonal = width == 6 || k == 0 || k == 4 || k == 8;
+        const std::size_t slot = width == 6 ? k : std::size_t(SLOT_OF_ROWS[k]);
+        for (std::size_t i = 0; i < n; ++i)
+            components[6 * i + slot] += (diagonal ? 1.0 : 0.5) * data.getValue(std::size_t(index), i);
+    }
+    return true;
+}
+
+namespace
+{
+
+osgGlyphsData::detail::SymmetricTensor tensorAt(const std::vector<double>& components, std::size_t i)
+{
+    const double* c = &components[6 * i];
+    osgGlyphsData::detail::SymmetricTensor tensor;
+    tensor.xx = c[0];
+    tensor.yy = c[1];
+    tensor.zz = c[2];
+    tensor.xy = c[3];
+    tensor.xz = c[4];
+    tensor.yz = c[5];
+    return tensor;
+}
+
+}
+
+bool GlyphMapper::computeTensorScale(const PointData& data, std::string& error)
+{
+    if (_options.tensorColumns.empty())
+        return true;
+    if (_options.tensorScale > 0.0f)
+    {
+        _tensorScale = _options.tensorScale;
+        return true;
+    }
+    std::vector<double> components;
+    if (!readTensors(data, components, error))
+        return false;
+    std::vector<double> largest;
+    for (std::size_t i = 0; i < data.getNumPoints(); ++i)
+    {
+        const detail::SymmetricTensor tensor = tensorAt(components, i);
+        if (!tensor.isFinite())
+            continue;
+        const osg::Vec3d values = detail::decompose(tensor).values;
+        const double magnitude = std::max(std::abs(values.x()), std::abs(values.z()));
+        if (magnitude > 0.0)
+            largest.push_back(magnitude);
+    }
+    _tensorScale = 1.0f;
+    if (!largest.empty())
+    {
+        std::nth_element(largest.begin(), largest.begin() + largest.size() / 2, largest.end());
+        _tensorScale = static_cast<float>(_radius / largest[largest.size() / 2]);
+    }
+    return true;
+}
+
 bool GlyphMapper::computeScalars(const PointData& data, std::vector<float>& scalars, std::string& error) const
 {
+    if (_colorSource == ColorSource::Tensor)
+    {
+        std::vector<double> components;
+        if (!readTensors(data, components, error))
+            return false;
+        scalars.resize(data.getNumPoints());
+        for (std::size_t i = 0; i < scalars.size(); ++i)
+        {
+            const detail::SymmetricTensor tensor = tensorAt(components, i);
+            const osg::Vec3d values = tensor.isFinite() ? detail::decompose(tensor).values : osg::Vec3d();
+            double value = tensor.trace();
+            if (_tensorQuantity == TensorQuantity::Anisotropy)
+                value = detail::fractionalAnisotropy(values);
+            else if (_tensorQuantity != TensorQuantity::Trace)
+                value = values[int(_tensorQuantity) - int(TensorQuantity::Eigenvalue1)];
+            scalars[i] = static_cast<float>(value);
+        }
+        return true;
+    }
     if (_colorSource == ColorSource::Column)
     {
         ColumnValues column;
@@ -335,6 +461,12 @@ bool GlyphMapper::computeRange(const PointDataset& dataset, std::string& error)
     {
         error = option("color-by") + " " + _key.title + ": the data has no finite values to colour by";
         return false;
+    }
+    if (_colorSource == ColorSource::Tensor && _tensorQuantity != TensorQuantity::Anisotropy)
+    {
+        // Signed: a range even about zero, where a diverging map's middle shows the sign change.
+        high = std::max(std::abs(low), std::abs(high));
+        low = -high;
     }
     _key.min = low;
     _key.max = high;
@@ -599,6 +731,31 @@ bool GlyphMapper::computeArrays(const PointData& data, FrameArrays& arrays, std:
 
 bool GlyphMapper::computeEllipsoids(const PointData& data, FrameArrays& arrays, std::string& error) const
 {
+    if (!_options.tensorColumns.empty())
+    {
+        std::vector<double> components;
+        if (!readTensors(data, components, error))
+            return false;
+        const std::size_t n = data.getNumPoints();
+        arrays.semiAxes = new osg::Vec3Array(n);
+        arrays.orientations = new osg::Vec4Array(n);
+        const float floor = TENSOR_FLOOR * _radius;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const detail::SymmetricTensor tensor = tensorAt(components, i);
+            if (!tensor.isFinite())
+            {
+                const float nan = std::numeric_limits<float>::quiet_NaN();
+                (*arrays.semiAxes)[i].set(nan, nan, nan); // skipped by the cloud, with a warning
+                continue;
+            }
+            const detail::TensorEigen eigen = detail::decompose(tensor);
+            for (int k = 0; k < 3; ++k)
+                (*arrays.semiAxes)[i][k] = std::max(float(std::abs(eigen.values[k]) * _tensorScale), floor);
+            (*arrays.orientations)[i] = eigen.rotation.asVec4();
+        }
+        return true;
+    }
     if (_semiAxisColumns.empty())
         return true;
     ColumnValues axes[3];
@@ -671,7 +828,7 @@ bool GlyphMapper::computeVectors(const PointData& data, osg::ref_ptr<osg::Vec3Ar
 bool GlyphMapper::computeColors(const PointData& data, FrameArrays& arrays, std::string& error) const
 {
     const std::size_t n = data.getNumPoints();
-    if (_colorSource == ColorSource::Column || _colorSource == ColorSource::Speed)
+    if (usesScalars())
     {
         arrays.scalars = new osg::FloatArray;
         return computeScalars(data, arrays.scalars->asVector(), error);
@@ -718,6 +875,7 @@ std::string GlyphMapper::describe() const
     {
     case ColorSource::Column:
     case ColorSource::Speed:
+    case ColorSource::Tensor:
         text += " coloured by " + _key.title +
                 (_colorSource == ColorSource::Speed ? " |" + joinColumns(_vectorColumns) + "|" : "") + " (" +
                 _key.colorMap->getName() + ", " + formatNumber(_key.min) + " .. " + formatNumber(_key.max) +
@@ -743,6 +901,9 @@ std::string GlyphMapper::describe() const
         text += ", radius " + formatNumber(_radius);
     if (osgGlyphs::isVectorShape(_options.shape))
         text += ", vectors " + joinColumns(_vectorColumns) + " x " + formatNumber(_lengthScale);
+    if (!_options.tensorColumns.empty())
+        text += ", tensors " + joinColumns(_options.tensorColumns) + " as ellipsoids, " +
+                formatNumber(_tensorScale) + " per unit of eigenvalue";
     if (!_semiAxisColumns.empty())
         text += ", ellipsoids of semi-axes " + joinColumns(_semiAxisColumns) +
                 (_semiAxisFactor != 1.0f ? " x " + formatNumber(_semiAxisFactor) : std::string()) +
@@ -834,6 +995,20 @@ void setColumn(GlyphMappingOptions& options, const std::string& name, const std:
         error = "needs a column name";
 }
 
+void setTensor(GlyphMappingOptions& options, const std::string&, const std::string& value, std::string& error)
+{
+    if (!splitList(value, 6, options.tensorColumns) && !splitList(value, 9, options.tensorColumns))
+        error =
+            "'" + value + "': give 6 column names (xx,yy,zz,xy,xz,yz) or 9 (row by row), separated by commas";
+}
+
+void setTensorScale(GlyphMappingOptions& options, const std::string&, const std::string& value,
+                    std::string& error)
+{
+    if (!parseNumber(value, options.tensorScale) || !(options.tensorScale > 0.0f))
+        error = "'" + value + "': must be a positive number";
+}
+
 void setColorMap(GlyphMappingOptions& options, const std::string&, const std::string& value,
                  std::string& error)
 {
@@ -888,7 +1063,7 @@ const std::pair<const char*, OptionSetter> OPTIONS[] = {
     {"radius-by", setColumn},  {"color-by", setColumn},     {"color", setColumn},
     {"colormap", setColorMap}, {"range", setRange},         {"length-scale", setPositiveNumber},
     {"glyph", setShape},       {"technique", setTechnique}, {"lit", setLit},
-    {"unlit", setUnlit}};
+    {"unlit", setUnlit},       {"tensor", setTensor},       {"tensor-scale", setTensorScale}};
 
 bool setOption(GlyphMappingOptions& options, const std::string& name, const std::string& value,
                std::string& error)

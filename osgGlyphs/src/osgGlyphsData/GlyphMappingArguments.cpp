@@ -69,6 +69,13 @@ void osgGlyphsData::describeGlyphMappingArguments(osg::ApplicationUsage& usage)
                                "sphere (default), cone, arrow, cylinder or ellipsoid (the default "
                                "where the data has ellipsoids' shape columns); cones, arrows "
                                "and cylinders point along the vectors.");
+    usage.addCommandLineOption("--tensor <xx,yy,zz,xy,xz,yz>",
+                               "A symmetric tensor per point (6 columns in LAMMPS's stress/atom order, or 9 "
+                               "row by row) drawn as an ellipsoid along its eigenvectors, semi-axes "
+                               "|eigenvalue| x --tensor-scale; --color-by trace (default), anisotropy or "
+                               "eigenvalue1..3 (largest first, signed).");
+    usage.addCommandLineOption("--tensor-scale <s>", "Semi-axis length per unit of eigenvalue (default: the "
+                                                     "median largest |eigenvalue| is the default radius).");
     usage.addCommandLineOption("--unlit", "Flat colours instead of lit glyphs (key l toggles).");
     usage.addCommandLineOption("--technique <name>",
                                "How glyphs are drawn: " + joinNames(osgGlyphs::getTechniqueNames()) +

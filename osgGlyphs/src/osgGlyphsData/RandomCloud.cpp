@@ -16,7 +16,8 @@ enum class Stream : unsigned int
 {
     Positions = 1,
     Scalars = 2,
-    Vectors = 3
+    Vectors = 3,
+    Ellipsoids = 4
 };
 
 /** Uniform floats in [0, 1) from a std::mt19937 seeded by (seed, stream), converted without
@@ -83,6 +84,27 @@ osg::ref_ptr<osg::Vec3Array> createVectors(PointRange range, unsigned int seed)
     return vectors;
 }
 
+/** Semi-axes (radius, and two uniform in [0.25, 1] of it) and rotations uniform over SO(3)
+ * (Shoemake's quaternions from three uniform numbers). */
+void setEllipsoids(GlyphCloud& cloud, PointRange range, unsigned int seed, float radius)
+{
+    const uint64_t count = range.end - range.begin;
+    UniformFloats uniform(seed, Stream::Ellipsoids, 5 * range.begin);
+    osg::ref_ptr<osg::Vec3Array> semiAxes = new osg::Vec3Array;
+    osg::ref_ptr<osg::Vec4Array> rotations = new osg::Vec4Array;
+    semiAxes->reserve(count);
+    rotations->reserve(count);
+    for (uint64_t i = 0; i < count; ++i)
+    {
+        semiAxes->push_back(osg::Vec3(1.0f, 0.25f + 0.75f * uniform(), 0.25f + 0.75f * uniform()) * radius);
+        const float u = uniform(), a = 2.0f * osg::PIf * uniform(), b = 2.0f * osg::PIf * uniform();
+        const float s = std::sqrt(1.0f - u), t = std::sqrt(u);
+        rotations->push_back(osg::Vec4(s * std::sin(a), s * std::cos(a), t * std::sin(b), t * std::cos(b)));
+    }
+    cloud.setSemiAxes(semiAxes.get());
+    cloud.setOrientations(rotations.get());
+}
+
 }
 
 float osgGlyphsData::getDefaultRandomRadius(unsigned int count)
@@ -105,6 +127,8 @@ osg::ref_ptr<GlyphCloud> osgGlyphsData::createRandomCloud(const RandomCloudOptio
         cloud->setVectors(createVectors(range, options.seed).get());
         cloud->setLengthScale(options.lengthScale > 0.0f ? options.lengthScale : 4.0f * radius);
     }
+    if (options.shape == GlyphShape::Ellipsoid)
+        setEllipsoids(*cloud, range, options.seed, radius);
     cloud->setShape(options.shape);
     // The positions last: the setters before them work on an empty cloud, and the culling chunks
     // are built once.
