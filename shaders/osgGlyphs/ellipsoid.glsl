@@ -8,7 +8,8 @@
  * its rows are the semi-axes over their squared lengths. */
 mat3 inverseSemiAxes(mat3 semiAxes)
 {
-    return transpose(mat3(semiAxes[0] / dot(semiAxes[0], semiAxes[0]), semiAxes[1] / dot(semiAxes[1], semiAxes[1]),
+    return transpose(mat3(semiAxes[0] / dot(semiAxes[0], semiAxes[0]),
+                          semiAxes[1] / dot(semiAxes[1], semiAxes[1]),
                           semiAxes[2] / dot(semiAxes[2], semiAxes[2])));
 }
 
@@ -17,7 +18,8 @@ mat3 inverseSemiAxes(mat3 semiAxes)
  * Q* = [A A^T - c c^T, -c; -c^T, -1] (c the centre). On clip-space rows i, j and w, with
  * g = row^T A A^T row' and p = row . (c, 1):
  *   m_i = (g_iw - p_i p_w) / (g_ww - p_w^2),
- *   S_ij = (g_iw g_jw - g_ij g_ww + g_ij p_w^2 + p_i p_j g_ww - p_w (g_iw p_j + g_jw p_i)) / (g_ww - p_w^2)^2,
+ *   S_ij = (g_iw g_jw - g_ij g_ww + g_ij p_w^2 + p_i p_j g_ww - p_w (g_iw p_j + g_jw p_i))
+ *          / (g_ww - p_w^2)^2,
  * the form in which the terms in p_i p_j p_w^2 have cancelled: the ellipse of a glyph far smaller
  * than its distance keeps its precision. Requires the ellipsoid to lie wholly in front of the eye. */
 void projectedEllipse(vec3 centre, mat3 semiAxes, out vec2 m, out mat2 S)
@@ -96,9 +98,13 @@ bool ellipsoidSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes, o
     if (h2 < 0.0)
         return false;
     float h = sqrt(h2 / a);
-    // The gradient of |A^-1 (x - centre)|^2 / 2 is A^-T A^-1 (x - centre).
-    span = Span(-b - h, -b + h, normalize(transpose(inverseAxes) * (closest - h * d)),
-                normalize(transpose(inverseAxes) * (closest + h * d)));
+    // The gradient of |A^-1 (x - centre)|^2 / 2 is A^-T A^-1 (x - centre). The far side's normal is
+    // shown only through a clip plane's cut.
+    mat3 toNormal = transpose(inverseAxes);
+    span = Span(-b - h, -b + h, normalize(toNormal * (closest - h * d)), vec3(0.0));
+#ifdef OSGGLYPHS_CLIP_PLANES
+    span.nLeave = normalize(toNormal * (closest + h * d));
+#endif
     return true;
 }
 
