@@ -15,10 +15,11 @@
 //   (domainVersionEntry(), OSGGLYPHS_SERIALIZER_DOMAIN_ENTRY in <osgGlyphs/Version>). Tile
 //   archives ask. Not for .osgx: OSG 3.6.5 writes the domain into XML files but cannot
 //   read such a file back.
-// Every property registered today is outside any UPDATE_TO_VERSION_SCOPED, so files of either
-// version, and of any later one, hold it. A property added later goes after
-// UPDATE_TO_VERSION_SCOPED(2), OSGGLYPHS_SERIALIZER_VERSION (and its entry) becomes 2, and the writers that
-// should store it ask for 2: osgDB reads it only from files that declare 2 or more and writes it only when
+// - 2: GlyphCloud's SemiAxes and Orientations (ellipsoids), after UPDATE_TO_VERSION_SCOPED(2).
+// The properties of version 0 and 1 are outside any UPDATE_TO_VERSION_SCOPED, so files of every
+// version hold them. A property added later goes after UPDATE_TO_VERSION_SCOPED(3),
+// OSGGLYPHS_SERIALIZER_VERSION (and its entry) becomes 3, and the writers that should store it ask
+// for 3: osgDB reads it only from files that declare 2 or more and writes it only when
 // asked. A file declaring a version this code does not know yet is read as far as this code knows it; what a
 // later release appends is skipped.
 

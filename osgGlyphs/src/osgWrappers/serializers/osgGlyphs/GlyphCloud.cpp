@@ -1,4 +1,5 @@
 #include <osgGlyphs/GlyphCloud>
+#include <osgGlyphs/Version>
 
 #include <osg/ValueObject>
 #include <osgDB/InputStream>
@@ -71,6 +72,14 @@ static bool writeByName(osgDB::OutputStream& os, const GlyphCloud& cloud)
 
 static bool writeShape(osgDB::OutputStream& os, const GlyphCloud& cloud)
 {
+    if (cloud.getShape() == osgGlyphs::GlyphShape::Ellipsoid &&
+        os.getFileVersion(OSGGLYPHS_SERIALIZER_DOMAIN) < 2)
+        OSG_WARN
+            << "osgGlyphs: GlyphCloud \"" << cloud.getName()
+            << "\" is written without its ellipsoids' semi-axes and orientations, which need version 2 of "
+               "the osgGlyphs serializers: give the writer options whose plugin string data "
+               "\"CustomDomains\" is \""
+            << OSGGLYPHS_SERIALIZER_DOMAIN_ENTRY << "\"" << std::endl;
     // Shape is the cloud's first property. Text streams write floats with 6 significant digits
     // by default; from here on they get enough digits for every float to read back exactly.
     os << exactFloats;
@@ -339,9 +348,8 @@ struct ComputeBoundsOnRead : public osgDB::FinishedObjectReadCallback
 
 // osg::Geometry is left out of the chain: its arrays and primitive sets are derived from the
 // cloud's own, which are written here. The technique is an object with a wrapper of its own
-// (Techniques.cpp; osgdb_serializers_osgglyphspaper for the paper's). Every property is in every
-// version of the osgGlyphs domain (DomainVersion.h): a new one goes last, after
-// UPDATE_TO_VERSION_SCOPED(2).
+// (Techniques.cpp; osgdb_serializers_osgglyphspaper for the paper's). The versions of the osgGlyphs
+// domain are in DomainVersion.h: a new property goes last, after UPDATE_TO_VERSION_SCOPED(3).
 REGISTER_CUSTOM_OBJECT_WRAPPER(osgGlyphs, osgGlyphs_GlyphCloud, new osgGlyphs::GlyphCloud,
                                osgGlyphs::GlyphCloud,
                                "osg::Object osg::Node osg::Drawable osgGlyphs::GlyphCloud")
@@ -375,6 +383,11 @@ REGISTER_CUSTOM_OBJECT_WRAPPER(osgGlyphs, osgGlyphs_GlyphCloud, new osgGlyphs::G
     ADD_FLOAT_SERIALIZER(Opacity, 1.0f);
     ADD_BOOL_SERIALIZER(CompressedPositions, false);
     ADD_USER_SERIALIZER(ScalarSteps);
+    {
+        UPDATE_TO_VERSION_SCOPED(2)
+        ADD_OBJECT_SERIALIZER(SemiAxes, osg::Vec3Array, NULL);
+        ADD_OBJECT_SERIALIZER(Orientations, osg::Vec4Array, NULL);
+    }
 }
 
 // osgDB narrows a wrapper's associates to the versions their own wrappers give them, in OSG's numbers
