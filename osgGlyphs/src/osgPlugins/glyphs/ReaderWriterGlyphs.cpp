@@ -192,6 +192,10 @@ public:
         supportsOption("position=<x>,<y>,<z>", "Position columns");
         supportsOption("vector=<x>,<y>,<z>", "Vector columns of cones, arrows and cylinders");
         supportsOption("length-scale=<s>", "Vector length per unit of magnitude");
+        supportsOption(
+            "tensor=<xx>,<yy>,<zz>,<xy>,<xz>,<yz>",
+            "Symmetric tensors (6 columns, or 9 row by row) as ellipsoids along their eigenvectors");
+        supportsOption("tensor-scale=<s>", "Ellipsoid semi-axis per unit of eigenvalue");
         supportsOption("technique=<name>", "How glyphs are drawn (default: the library's)");
         supportsOption("unlit", "No lighting");
     }
