@@ -124,6 +124,19 @@ TEST_F(GlyphDiagnosis, GlyphsOfARadiusThatIsNotFiniteAreEverySkipped)
                  "that is not finite and > 0)");
 }
 
+TEST_F(GlyphDiagnosis, EllipsoidsOfFlatSemiAxesAreEverySkippedAndOthersAreSeen)
+{
+    osg::ref_ptr<GlyphCloud> cloud = createCloud(THREE_POINTS, 0.5f);
+    cloud->setShape(osgGlyphs::GlyphShape::Ellipsoid);
+    cloud->setSemiAxes(makeArray<osg::Vec3Array>(
+        {osg::Vec3(0.5f, 0.0f, 0.2f), osg::Vec3(0.5f, 0.3f, -0.2f), osg::Vec3(0.5f, 0.3f, 0.0f)}));
+    expectHidden(group({cloud.get()}).get(), "no glyph is drawn: every glyph is skipped (3 of 3 have "
+                                             "semi-axes that are not all finite and > 0)");
+    cloud->setSemiAxes(makeArray<osg::Vec3Array>(
+        {osg::Vec3(0.5f, 0.1f, 0.2f), osg::Vec3(0.5f, 0.3f, 0.2f), osg::Vec3(0.5f, 0.3f, 0.4f)}));
+    expectSeen(group({cloud.get()}).get(), 100);
+}
+
 TEST_F(GlyphDiagnosis, BoundsBeyondFloatAreNotFinite)
 {
     // Centres that float holds, padded by radii that take them past its largest value.

@@ -36,12 +36,19 @@ enum SkipReason
     NON_FINITE_SCALAR,
     NON_FINITE_VECTOR,
     ZERO_VECTOR,
+    BAD_SEMI_AXES,
+    BAD_ORIENTATION,
     NUM_SKIP_REASONS
 };
 
 const char* const SKIP_DESCRIPTIONS[NUM_SKIP_REASONS] = {
-    "a position that is not finite", "a radius that is not finite and > 0", "a scalar that is not finite",
-    "a vector that is not finite", "a zero vector, which gives it no direction"};
+    "a position that is not finite",
+    "a radius that is not finite and > 0",
+    "a scalar that is not finite",
+    "a vector that is not finite",
+    "a zero vector, which gives it no direction",
+    "semi-axes that are not all finite and > 0",
+    "an orientation quaternion that is zero or not finite"};
 
 bool isFinite(const osg::Vec3& v)
 {
@@ -86,19 +93,37 @@ public:
 
 float getGlyphRadius(const GlyphCloud& cloud, unsigned int i)
 {
+    if (cloud.getShape() == GlyphShape::Ellipsoid)
+    {
+        const osg::Vec3& semiAxes = (*cloud.getSemiAxes())[i];
+        return std::max(semiAxes.x(), std::max(semiAxes.y(), semiAxes.z()));
+    }
     return cloud.getRadii() ? (*cloud.getRadii())[i] : cloud.getRadius();
+}
+
+/** GlyphCloud's rules for an ellipsoid's semi-axes and orientation. */
+SkipReason getEllipsoidSkipReason(const GlyphCloud& cloud, unsigned int i)
+{
+    const osg::Vec3& semiAxes = (*cloud.getSemiAxes())[i];
+    if (!isFinite(semiAxes) || !(semiAxes.x() > 0.0f && semiAxes.y() > 0.0f && semiAxes.z() > 0.0f))
+        return BAD_SEMI_AXES;
+    const float turn = cloud.getOrientations() ? (*cloud.getOrientations())[i].length() : 1.0f;
+    return std::isfinite(turn) && turn > 0.0f ? DRAWN : BAD_ORIENTATION;
 }
 
 /** Whether and why the cloud skips glyph i, by GlyphCloud's rules. */
 SkipReason getSkipReason(const GlyphCloud& cloud, unsigned int i)
 {
-    const float radius = getGlyphRadius(cloud, i);
     if (!isFinite((*cloud.getPositions())[i]))
         return NON_FINITE_POSITION;
+    const bool ellipsoid = cloud.getShape() == GlyphShape::Ellipsoid;
+    const float radius = ellipsoid ? 1.0f : getGlyphRadius(cloud, i);
     if (!(std::isfinite(radius) && radius > 0.0f))
         return BAD_RADIUS;
     if (cloud.getScalars() && !std::isfinite((*cloud.getScalars())[i]))
         return NON_FINITE_SCALAR;
+    if (ellipsoid)
+        return getEllipsoidSkipReason(cloud, i);
     if (!isVectorShape(cloud.getShape()))
         return DRAWN;
     const osg::Vec3& vector = (*cloud.getVectors())[i];
