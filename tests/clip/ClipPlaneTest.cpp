@@ -358,14 +358,8 @@ TEST(ClippedGlyphsLighting, CapsAreLitWithThePlaneNormal)
 {
     Renderer renderer(240, 160);
     renderer.getViewer()->setLightingMode(osg::View::NO_LIGHT);
-    const osg::Vec3d towardsLight(-0.45, -0.65, 0.6);
-    osg::ref_ptr<osg::LightSource> source = new osg::LightSource;
-    osg::Light* light = source->getLight();
-    light->setLightNum(0);
-    light->setPosition(osg::Vec4(towardsLight, 0.0f));
-    light->setAmbient(osg::Vec4(0.05f, 0.05f, 0.08f, 1.0f));
-    light->setDiffuse(osg::Vec4(0.85f, 0.8f, 0.7f, 1.0f));
-    light->setSpecular(osg::Vec4(0.7f, 0.7f, 0.6f, 1.0f));
+    osg::ref_ptr<osg::LightSource> source = createColouredLight();
+    const osg::Light* light = source->getLight();
     osg::ref_ptr<GlyphCloud> cloud = createCloud(GlyphShape::Sphere, GLYPHS, true);
     const osg::Vec3d material(cloud->getAmbient(), cloud->getSpecular(), cloud->getShininess());
     source->addChild(clipped(group({cloud.get()}).get(), SLANTED, true).get());
@@ -376,36 +370,13 @@ TEST(ClippedGlyphsLighting, CapsAreLitWithThePlaneNormal)
     addGlyphs(truth, GlyphShape::Sphere, GLYPHS);
     truth.addClipPlane(SLANTED[0]);
     truth.setClipCaps(true);
-    EyeLight eyeLight;
-    eyeLight.position = osg::Vec4d(osg::Matrixd::transform3x3(towardsLight, frame.view), 0.0);
-    for (int c = 0; c < 3; ++c)
-    {
-        eyeLight.ambient[c] = light->getAmbient()[c];
-        eyeLight.diffuse[c] = light->getDiffuse()[c];
-        eyeLight.specular[c] = light->getSpecular()[c];
-    }
     const osg::Vec3d capNormal = -SLANTED[0].getNormal() / SLANTED[0].getNormal().length();
-    int caps = 0, wrong = 0;
-    for (int y = 0; y < frame.height(); ++y)
-        for (int x = 0; x < frame.width(); ++x)
-        {
-            const int label = truth.certainLabel(frame, x, y);
-            osg::Vec3d origin, direction;
-            frame.pixelRay(x + 0.5, y + 0.5, origin, direction);
-            const RayHit hit = truth.cast(origin, direction);
-            if (label < 0 || (hit.normal - capNormal).length() > 1e-9)
-                continue; // not a cap
-            const osg::Vec4ub& color = GLYPHS[label].color;
-            const osg::Vec3d lit =
-                shadeLikeGlyphs(osg::Vec3d(color.r(), color.g(), color.b()) / 255.0, hit.point * frame.view,
-                                osg::Matrixd::transform3x3(hit.normal, frame.view),
-                                -osg::Matrixd::transform3x3(direction, frame.view), eyeLight, material);
-            osg::Vec4ub expected(0, 0, 0, 255);
-            for (int c = 0; c < 3; ++c)
-                expected[c] = static_cast<unsigned char>(std::lround(std::clamp(lit[c], 0.0, 1.0) * 255.0));
-            ++caps;
-            wrong += colorNear(frame, x, y, expected, 3) ? 0 : 1;
-        }
-    EXPECT_GT(caps, 50);
-    EXPECT_EQ(wrong, 0) << "of " << caps << " cap pixels";
+    std::vector<osg::Vec4ub> colors;
+    for (const Glyph& glyph : GLYPHS)
+        colors.push_back(glyph.color);
+    const LitAgreement caps =
+        compareLitWithTruth(frame, truth, colors, eyeLightOf(*light, frame), material, 3,
+                            [&](const RayHit& hit) { return (hit.normal - capNormal).length() <= 1e-9; });
+    EXPECT_GT(caps.checked, 50);
+    EXPECT_EQ(caps.wrong, 0) << "of " << caps.checked << " cap pixels";
 }

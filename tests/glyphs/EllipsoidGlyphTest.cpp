@@ -254,14 +254,8 @@ TEST_P(Ellipsoids, LitColourFollowsTheAnalyticNormal)
     // A coloured directional light from the upper left front in place of the headlight: a normal
     // off the quadric's gradient changes the shade.
     renderer.getViewer()->setLightingMode(osg::View::NO_LIGHT);
-    const osg::Vec3d towardsLight(-0.45, -0.65, 0.6);
-    osg::ref_ptr<osg::LightSource> source = new osg::LightSource;
-    osg::Light* light = source->getLight();
-    light->setLightNum(0);
-    light->setPosition(osg::Vec4(towardsLight, 0.0f));
-    light->setAmbient(osg::Vec4(0.05f, 0.05f, 0.08f, 1.0f));
-    light->setDiffuse(osg::Vec4(0.85f, 0.8f, 0.7f, 1.0f));
-    light->setSpecular(osg::Vec4(0.7f, 0.7f, 0.6f, 1.0f));
+    osg::ref_ptr<osg::LightSource> source = createColouredLight();
+    const osg::Light* light = source->getLight();
     const osg::Vec3d material(0.12, 0.5, 24.0);
     std::vector<EllipsoidSpec> glyphs = sixEllipsoids();
     for (std::size_t i = 0; i < glyphs.size(); ++i)
@@ -276,39 +270,11 @@ TEST_P(Ellipsoids, LitColourFollowsTheAnalyticNormal)
     const Frame frame = renderer.render(root.get());
     saveFrame(frame, std::string("ellipsoids_lit_") + GetParam());
 
-    const AnalyticScene truth = truthOf(glyphs);
-    EyeLight eyeLight;
-    eyeLight.position = osg::Vec4d(osg::Matrixd::transform3x3(towardsLight, frame.view), 0.0);
-    for (int c = 0; c < 3; ++c)
-    {
-        eyeLight.ambient[c] = light->getAmbient()[c];
-        eyeLight.diffuse[c] = light->getDiffuse()[c];
-        eyeLight.specular[c] = light->getSpecular()[c];
-    }
     // The semi-axes and quaternion in 16 bits tilt the normal by 1e-4 at most: 3 levels per channel.
-    int checked = 0, wrong = 0;
-    for (int y = 0; y < frame.height(); ++y)
-        for (int x = 0; x < frame.width(); ++x)
-        {
-            const int label = truth.certainLabel(frame, x, y);
-            if (label < 0)
-                continue;
-            osg::Vec3d origin, direction;
-            frame.pixelRay(x + 0.5, y + 0.5, origin, direction);
-            const RayHit hit = truth.cast(origin, direction);
-            const osg::Vec4ub& color = glyphs[label].color;
-            const osg::Vec3d lit =
-                shadeLikeGlyphs(osg::Vec3d(color.r(), color.g(), color.b()) / 255.0, hit.point * frame.view,
-                                osg::Matrixd::transform3x3(hit.normal, frame.view),
-                                -osg::Matrixd::transform3x3(direction, frame.view), eyeLight, material);
-            osg::Vec4ub expected(0, 0, 0, 255);
-            for (int c = 0; c < 3; ++c)
-                expected[c] = static_cast<unsigned char>(std::lround(std::clamp(lit[c], 0.0, 1.0) * 255.0));
-            ++checked;
-            wrong += colorNear(frame, x, y, expected, 3) ? 0 : 1;
-        }
-    EXPECT_GT(checked, 5000);
-    EXPECT_LE(wrong, checked / 1000) << "of " << checked << " pixels";
+    const LitAgreement agreement = compareLitWithTruth(frame, truthOf(glyphs), paletteOf(glyphs),
+                                                       eyeLightOf(*light, frame), material, 3);
+    EXPECT_GT(agreement.checked, 5000);
+    EXPECT_LE(agreement.wrong, agreement.checked / 1000) << "of " << agreement.checked << " pixels";
 }
 
 INSTANTIATE_TEST_SUITE_P(, Ellipsoids, ::testing::Values("geometry-shader", "point-sprite", "instanced"),

@@ -159,4 +159,62 @@ std::string NotifyCapture::stop()
     return _text.str();
 }
 
+osg::ref_ptr<osg::LightSource> createColouredLight()
+{
+    osg::ref_ptr<osg::LightSource> source = new osg::LightSource;
+    osg::Light* light = source->getLight();
+    light->setLightNum(0);
+    light->setPosition(osg::Vec4(-0.45f, -0.65f, 0.6f, 0.0f));
+    light->setAmbient(osg::Vec4(0.05f, 0.05f, 0.08f, 1.0f));
+    light->setDiffuse(osg::Vec4(0.85f, 0.8f, 0.7f, 1.0f));
+    light->setSpecular(osg::Vec4(0.7f, 0.7f, 0.6f, 1.0f));
+    return source;
+}
+
+EyeLight eyeLightOf(const osg::Light& light, const Frame& frame)
+{
+    const osg::Vec4& position = light.getPosition();
+    EyeLight eyeLight;
+    eyeLight.position = osg::Vec4d(
+        osg::Matrixd::transform3x3(osg::Vec3d(position.x(), position.y(), position.z()), frame.view), 0.0);
+    for (int c = 0; c < 3; ++c)
+    {
+        eyeLight.ambient[c] = light.getAmbient()[c];
+        eyeLight.diffuse[c] = light.getDiffuse()[c];
+        eyeLight.specular[c] = light.getSpecular()[c];
+    }
+    return eyeLight;
+}
+
+LitAgreement compareLitWithTruth(const Frame& frame, const AnalyticScene& truth,
+                                 const std::vector<osg::Vec4ub>& labelColors, const EyeLight& light,
+                                 const osg::Vec3d& material, int tolerance,
+                                 const std::function<bool(const RayHit&)>& keep)
+{
+    LitAgreement result;
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x)
+        {
+            const int label = truth.certainLabel(frame, x, y);
+            if (label < 0)
+                continue;
+            osg::Vec3d origin, direction;
+            frame.pixelRay(x + 0.5, y + 0.5, origin, direction);
+            const RayHit hit = truth.cast(origin, direction);
+            if (keep && !keep(hit))
+                continue;
+            const osg::Vec4ub& color = labelColors[label];
+            const osg::Vec3d lit =
+                shadeLikeGlyphs(osg::Vec3d(color.r(), color.g(), color.b()) / 255.0, hit.point * frame.view,
+                                osg::Matrixd::transform3x3(hit.normal, frame.view),
+                                -osg::Matrixd::transform3x3(direction, frame.view), light, material);
+            osg::Vec4ub expected(0, 0, 0, 255);
+            for (int c = 0; c < 3; ++c)
+                expected[c] = static_cast<unsigned char>(std::lround(std::clamp(lit[c], 0.0, 1.0) * 255.0));
+            ++result.checked;
+            result.wrong += colorNear(frame, x, y, expected, tolerance) ? 0 : 1;
+        }
+    return result;
+}
+
 }

@@ -8,8 +8,11 @@
 #include <osgGlyphs/GlyphCloud>
 
 #include <osg/Geode>
+#include <osg/Light>
+#include <osg/LightSource>
 #include <osg/Notify>
 
+#include <functional>
 #include <mutex>
 #include <sstream>
 #include <vector>
@@ -78,6 +81,29 @@ struct CentreAgreement
 
 CentreAgreement compareEveryPixelCentre(const Frame& frame, const AnalyticScene& truth,
                                         const std::vector<osg::Vec4ub>& palette, double depthTolerance);
+
+/** Light 0, directional from the upper left front (towards (-0.45, -0.65, 0.6)), with coloured
+ * ambient, diffuse and specular parts: for a Renderer whose view has NO_LIGHT, so that every part
+ * of a normal changes the shade. */
+osg::ref_ptr<osg::LightSource> createColouredLight();
+
+/** A directional osg::Light (position w = 0, in world coordinates, under no transform) as the glyph
+ * shaders see it in the frame's view. */
+EyeLight eyeLightOf(const osg::Light& light, const Frame& frame);
+
+/** Lit colours against the truth: over the pixels whose label is certain (and that keep accepts,
+ * given a hit), the colour of the label lit at the analytic hit with the analytic normal
+ * (shadeLikeGlyphs) against the frame, to tolerance levels per channel. */
+struct LitAgreement
+{
+    int checked = 0;
+    int wrong = 0;
+};
+
+LitAgreement compareLitWithTruth(const Frame& frame, const AnalyticScene& truth,
+                                 const std::vector<osg::Vec4ub>& labelColors, const EyeLight& light,
+                                 const osg::Vec3d& material, int tolerance,
+                                 const std::function<bool(const RayHit&)>& keep = nullptr);
 
 /** Writes a shader file that OSG's data path finds before the embedded copy: name (such as
  * "lighting.glsl") under outputPath(folder)/osgGlyphs. Returns outputPath(folder), the folder to put

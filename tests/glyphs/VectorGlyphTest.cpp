@@ -349,14 +349,8 @@ TEST_P(VectorGlyphs, LitColourFollowsTheAnalyticNormal)
     // part of a normal (across and along the axis) changes the shade, whichever way the glyph points.
     Renderer large(320, 240);
     large.getViewer()->setLightingMode(osg::View::NO_LIGHT);
-    const osg::Vec3d towardsLight(-0.45, -0.65, 0.6);
-    osg::ref_ptr<osg::LightSource> source = new osg::LightSource;
-    osg::Light* light = source->getLight();
-    light->setLightNum(0);
-    light->setPosition(osg::Vec4(towardsLight, 0.0f));
-    light->setAmbient(osg::Vec4(0.05f, 0.05f, 0.08f, 1.0f));
-    light->setDiffuse(osg::Vec4(0.85f, 0.8f, 0.7f, 1.0f));
-    light->setSpecular(osg::Vec4(0.7f, 0.7f, 0.6f, 1.0f));
+    osg::ref_ptr<osg::LightSource> source = createColouredLight();
+    const osg::Light* light = source->getLight();
     const osg::Vec3d material(0.12, 0.5, 24.0);
 
     // Towards the viewer, away from it, across, up and down, oblique.
@@ -378,44 +372,17 @@ TEST_P(VectorGlyphs, LitColourFollowsTheAnalyticNormal)
 
     AnalyticScene truth;
     addVectorGlyphs(truth, GetParam(), glyphs);
-    // The light as glLight stores it: its direction through the view matrix at the LightSource.
-    EyeLight eyeLight;
-    eyeLight.position = osg::Vec4d(osg::Matrixd::transform3x3(towardsLight, frame.view), 0.0);
-    for (int c = 0; c < 3; ++c)
-    {
-        eyeLight.ambient[c] = light->getAmbient()[c];
-        eyeLight.diffuse[c] = light->getDiffuse()[c];
-        eyeLight.specular[c] = light->getSpecular()[c];
-    }
     // Every pixel whose centre and neighbourhood show one glyph gets that glyph's colour, lit at
     // the analytic hit with the analytic normal, to 3 levels per channel: the shader's single
     // precision against double precision (1 level seen). A pixel centre on a rim or crease may fall
     // on the other side of it in single precision: 1 in 1000 pixels may differ.
-    int checked = 0, wrong = 0;
-    for (int y = 0; y < frame.height(); ++y)
-    {
-        for (int x = 0; x < frame.width(); ++x)
-        {
-            const int label = truth.certainLabel(frame, x, y);
-            if (label < 0)
-                continue;
-            osg::Vec3d origin, direction;
-            frame.pixelRay(x + 0.5, y + 0.5, origin, direction);
-            const RayHit hit = truth.cast(origin, direction);
-            const osg::Vec4ub& color = glyphs[label].color;
-            const osg::Vec3d lit =
-                shadeLikeGlyphs(osg::Vec3d(color.r(), color.g(), color.b()) / 255.0, hit.point * frame.view,
-                                osg::Matrixd::transform3x3(hit.normal, frame.view),
-                                -osg::Matrixd::transform3x3(direction, frame.view), eyeLight, material);
-            osg::Vec4ub expected(0, 0, 0, 255);
-            for (int c = 0; c < 3; ++c)
-                expected[c] = static_cast<unsigned char>(std::lround(std::clamp(lit[c], 0.0, 1.0) * 255.0));
-            ++checked;
-            wrong += colorNear(frame, x, y, expected, 3) ? 0 : 1;
-        }
-    }
-    EXPECT_GT(checked, 4000);
-    EXPECT_LE(wrong, checked / 1000) << "of " << checked << " pixels";
+    std::vector<osg::Vec4ub> colors;
+    for (const VectorSpec& glyph : glyphs)
+        colors.push_back(glyph.color);
+    const LitAgreement agreement =
+        compareLitWithTruth(frame, truth, colors, eyeLightOf(*light, frame), material, 3);
+    EXPECT_GT(agreement.checked, 4000);
+    EXPECT_LE(agreement.wrong, agreement.checked / 1000) << "of " << agreement.checked << " pixels";
 }
 
 INSTANTIATE_TEST_SUITE_P(, VectorGlyphs,
