@@ -1,5 +1,6 @@
 #include "TrajectoryScene.h"
 
+#include "BondOptions.h"
 #include "DatasetLoading.h"
 #include "MovieOutput.h"
 #include "ViewerText.h"
@@ -141,6 +142,10 @@ osg::ref_ptr<ViewerScene> createTrajectoryScene(const ViewerOptions& options, st
     group->setName(options.file);
     group->addChild(cloud.get());
     group->setUpdateCallback(player.get());
+    std::string bonds;
+    if (options.bonds.enabled() &&
+        !addBondCloud(*group, *cloud, *sampled->getFrame(0), player.get(), options.bonds, bonds, error))
+        return nullptr;
     ViewerScene::FrameSource frames = [group, player](std::size_t frame, std::string& frameError)
     {
         if (!player->showNow(static_cast<double>(frame), frameError))
@@ -160,10 +165,11 @@ osg::ref_ptr<ViewerScene> createTrajectoryScene(const ViewerOptions& options, st
             return points.valid() ? describeColumns(*points, index) : std::string();
         });
     const std::string compression = source->getCompressionName();
-    scene->setDescription(
-        options.file + ": " + frameCount(source->getNumFrames(), source->isIndexComplete()) + " (" +
-        source->getFormat() + (compression.empty() ? "" : ", " + compression) + "), " +
-        std::to_string(source->getFirstFrame()->getNumPoints()) + " points in frame 0; " + mapper.describe());
+    scene->setDescription(options.file + ": " +
+                          frameCount(source->getNumFrames(), source->isIndexComplete()) + " (" +
+                          source->getFormat() + (compression.empty() ? "" : ", " + compression) + "), " +
+                          std::to_string(source->getFirstFrame()->getNumPoints()) + " points in frame 0; " +
+                          mapper.describe() + (bonds.empty() ? "" : "; " + bonds));
     player->setPlaying(playback.play);
     return scene;
 }

@@ -273,6 +273,7 @@ void describeViewerOptions(osg::ApplicationUsage& usage)
 
     osgGlyphsData::describeGlyphMappingArguments(usage);
     describePlaybackOptions(usage);
+    describeBondOptions(usage);
 
     usage.addCommandLineOption("--size <w> <h>", "Window or image size in pixels (default 800 600).");
     usage.addCommandLineOption("--camera <ex> <ey> <ez> <cx> <cy> <cz> <ux> <uy> <uz>",
@@ -335,7 +336,8 @@ bool readViewerOptions(osg::ArgumentParser& arguments, ViewerOptions& options, s
 {
     if (!readInputOptions(arguments, options, error) || !readMappingOptions(arguments, options, error) ||
         !readViewOptions(arguments, options, error) || !readOutputOptions(arguments, options, error) ||
-        !readPlaybackOptions(arguments, options.playback, error))
+        !readPlaybackOptions(arguments, options.playback, error) ||
+        !readBondOptions(arguments, options.bonds, error))
         return false;
     if (options.playback.hasFrameRange || !options.playback.movie.empty())
         options.offscreen = true;
@@ -372,6 +374,11 @@ bool readViewerOptions(osg::ArgumentParser& arguments, ViewerOptions& options, s
     if (options.follow && options.file.empty())
     {
         error = "--follow needs a file";
+        return false;
+    }
+    if (options.bonds.enabled() && options.file.empty())
+    {
+        error = "--bond-cutoff needs a file of atoms";
         return false;
     }
     const PlaybackOptions& playback = options.playback;

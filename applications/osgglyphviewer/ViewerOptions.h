@@ -3,6 +3,7 @@
 #ifndef OSGGLYPHVIEWER_VIEWEROPTIONS_H
 #define OSGGLYPHVIEWER_VIEWEROPTIONS_H 1
 
+#include "BondOptions.h"
 #include "PlaybackOptions.h"
 #include "ScreenEffectsOptions.h"
 #include "Transparency.h"
@@ -50,6 +51,7 @@ struct ViewerOptions
 
     osgGlyphsData::GlyphMappingOptions mapping;
     PlaybackOptions playback; // trajectories: --play, --fps, --interpolate, --frame-range, --movie
+    BondOptions bonds;        // --bond-cutoff, --bond-radius
 
     // View
     int width = 800;

@@ -167,6 +167,7 @@ TEST(BondGeometry, HalvesTakeTheirAtomsColours)
     ASSERT_EQ(bondCloud->getColorMode(), osgGlyphs::GlyphColorMode::RGBA);
     const std::vector<osg::Vec4ub> expected = {RED, GREEN, RED, BLUE};
     EXPECT_EQ(bondCloud->getColors()->asVector(), expected);
+    std::cout << "GPU bytes per bond, RGBA colours: " << 2.0 * bondCloud->getGPUBytesPerGlyph() << std::endl;
 
     // Scalars: the same values per half, the same map and range.
     osg::ref_ptr<GlyphCloud> scalar = atomCloud(atoms, 0.5f);
@@ -178,6 +179,7 @@ TEST(BondGeometry, HalvesTakeTheirAtomsColours)
     const std::vector<float> expectedScalars = {1.0f, 3.0f, 1.0f, 5.0f};
     EXPECT_EQ(bondCloud->getScalars()->asVector(), expectedScalars);
     EXPECT_EQ(bondCloud->getColorMap(), scalar->getColorMap());
+    std::cout << "GPU bytes per bond, scalars: " << 2.0 * bondCloud->getGPUBytesPerGlyph() << std::endl;
     EXPECT_EQ(bondCloud->getScalarRangeMin(), 1.0f);
     EXPECT_EQ(bondCloud->getScalarRangeMax(), 5.0f);
     scalar->setScalarRange(-2.0f, 7.0f);

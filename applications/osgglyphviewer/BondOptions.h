@@ -1,0 +1,41 @@
+// osgglyphviewer: bonds between atoms, found by a distance cutoff and drawn as half-bond cylinders
+// beside the atoms (osgGlyphsData/BondFinder, osgGlyphsData/BondGlyphs).
+
+#ifndef OSGGLYPHVIEWER_BONDOPTIONS_H
+#define OSGGLYPHVIEWER_BONDOPTIONS_H 1
+
+#include <osgGlyphs/GlyphCloud>
+#include <osgGlyphsData/PointData>
+#include <osgGlyphsData/TrajectoryPlayer>
+
+#include <osg/ApplicationUsage>
+#include <osg/ArgumentParser>
+#include <osg/Group>
+
+#include <string>
+
+/** How bonds are drawn. */
+struct BondOptions
+{
+    double cutoff = 0.0; // --bond-cutoff r: atoms at most r apart bond; 0: no bonds
+    float radius = 0.0f; // --bond-radius r; 0: 0.4 x the smallest atom radius
+
+    bool enabled() const { return cutoff > 0.0; }
+};
+
+void describeBondOptions(osg::ApplicationUsage& usage);
+
+/** Reads the options above; false with a one-line error on a bad value. */
+bool readBondOptions(osg::ArgumentParser& arguments, BondOptions& options, std::string& error);
+
+/** Adds to group, after the atoms' cloud, the bonds of the atoms of frame (whose glyphs atoms
+ * holds, in the same order) as a cloud of half-bonds coloured as their atoms: found within the
+ * cutoff, across the faces of the frame's box where it has one (periodic along every edge). With a
+ * player, the bonds are found again, in the update traversal, whenever the player has moved the
+ * atoms (and with the box of the frame shown). description gets a few words for the console. False
+ * with a one-line error. */
+bool addBondCloud(osg::Group& group, osgGlyphs::GlyphCloud& atoms, const osgGlyphsData::PointData& frame,
+                  osgGlyphsData::TrajectoryPlayer* player, const BondOptions& options,
+                  std::string& description, std::string& error);
+
+#endif
