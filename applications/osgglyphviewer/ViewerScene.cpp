@@ -331,8 +331,15 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
         error = "--topology: " + options.file + " is a tile archive, whose glyphs are made already";
         return nullptr;
     }
+    const bool tiles = !options.file.empty() && isTileArchive(options.file);
+    if (options.bonds.enabled() && (tiles || sharing.isShared()))
+    {
+        error = std::string("--bond-cutoff: bonds are drawn for a file of atoms on one process, not ") +
+                (tiles ? "for a tile archive" : "under mpirun");
+        return nullptr;
+    }
     osg::ref_ptr<ViewerScene> scene;
-    if (!options.file.empty() && isTileArchive(options.file))
+    if (tiles)
         scene = createTileScene(options, error);
     else if (!options.file.empty() && !sharing.isShared())
         scene = createTrajectoryScene(options, error);
