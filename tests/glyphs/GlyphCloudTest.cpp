@@ -205,6 +205,42 @@ TEST_F(GlyphCloudData, CulledCloudsDrawCopiesInSpatialOrder)
     EXPECT_EQ(cloud->getVertexArray(), source.positions);
 }
 
+// Arrays shrunk in place and a setter called before dirtyGlyphs(): the cloud first catches up with
+// the arrays rather than gathering copies from the glyphs they no longer hold (a read past the end
+// that only a sanitizer saw).
+TEST_F(GlyphCloudData, ASetterAfterArraysShrunkInPlaceCatchesUp)
+{
+    osg::ref_ptr<GlyphCloud> cloud = createScalarRow({0.0f, 1.0f, 2.0f});
+    osg::Vec3Array& positions = *cloud->getPositions();
+    std::reverse(positions.begin(), positions.end()); // drawn from copies in spatial order
+    positions.dirty();
+    cloud->dirtyGlyphs();
+    ASSERT_NE(cloud->getDrawnArrays().positions, cloud->getGlyphArrays().positions);
+    ASSERT_EQ(cloud->getNumGlyphs(), 3u);
+
+    positions.resize(2);
+    cloud->getScalars()->resize(2);
+    positions.dirty();
+    cloud->getScalars()->dirty();
+    cloud->setScalarRange(-2.0f, 6.0f); // another quantisation range: the scalars are packed again
+    EXPECT_EQ(cloud->getNumGlyphs(), 2u);
+    const osgGlyphs::GlyphArrays drawn = cloud->getDrawnArrays();
+    EXPECT_EQ(drawn.count, 2u);
+    if (drawn.positions != cloud->getGlyphArrays().positions)
+    {
+        ASSERT_EQ(drawn.positions->getNumElements(), 2u);
+        const auto& drawnPositions = static_cast<const osg::Vec3Array&>(*drawn.positions);
+        EXPECT_TRUE((drawnPositions[0] == positions[0] && drawnPositions[1] == positions[1]) ||
+                    (drawnPositions[0] == positions[1] && drawnPositions[1] == positions[0]));
+    }
+    const Frame frame = renderer.render(group({cloud.get()}).get());
+    for (unsigned int i = 0; i < 2; ++i)
+    {
+        const osg::Vec3d centre = frame.project(positions[i]);
+        EXPECT_TRUE(frame.isCovered(int(centre.x()), int(centre.y()))) << i;
+    }
+}
+
 // Sorted spatially, a cloud draws its own arrays: every glyph keeps its values, a glyph that is
 // not drawn goes last, and the picture is the same.
 TEST_F(GlyphCloudData, SortedSpatiallyACloudDrawsItsOwnArrays)

@@ -167,6 +167,22 @@ bool osgGlyphsData::updateBondCloud(osgGlyphs::GlyphCloud& bondCloud, const osgG
     if (!computeHalfBonds(positions ? positions->asVector() : none, bonds, box, tails, vectors, error))
         return false;
 
+    // The atoms' map and range first: setting them rebuilds what the cloud draws, which must not
+    // happen while its arrays are refilled below.
+    const std::size_t numAtoms = positions ? positions->size() : 0;
+    const osg::FloatArray* scalars = atoms.getScalars();
+    const bool scalarColours =
+        atoms.getColorMode() == osgGlyphs::GlyphColorMode::Scalar && scalars && scalars->size() >= numAtoms;
+    if (scalarColours)
+    {
+        if (bondCloud.getColorMap() != atoms.getColorMap())
+            bondCloud.setColorMap(const_cast<osgGlyphs::ColorMap*>(atoms.getColorMap()));
+        if (bondCloud.getScalarRangeIsAutomatic() ||
+            bondCloud.getScalarRangeMin() != atoms.getScalarRangeMin() ||
+            bondCloud.getScalarRangeMax() != atoms.getScalarRangeMax())
+            bondCloud.setScalarRange(atoms.getScalarRangeMin(), atoms.getScalarRangeMax());
+    }
+
     osg::ref_ptr<osg::Vec3Array> bondPositions = bondCloud.getPositions();
     osg::ref_ptr<osg::Vec3Array> bondVectors = bondCloud.getVectors();
     if (!bondPositions)
@@ -182,17 +198,9 @@ bool osgGlyphsData::updateBondCloud(osgGlyphs::GlyphCloud& bondCloud, const osgG
     // The atoms' colouring, per half: scalars through the atoms' map and range, or colours, or
     // the one colour. Arrays of the atoms shorter than their positions leave those glyphs to the
     // cloud's own checks; the half-bonds take the one colour then.
-    const std::size_t numAtoms = positions ? positions->size() : 0;
-    const osg::FloatArray* scalars = atoms.getScalars();
     const osg::Vec4ubArray* colors = atoms.getColors();
-    if (atoms.getColorMode() == osgGlyphs::GlyphColorMode::Scalar && scalars && scalars->size() >= numAtoms)
+    if (scalarColours)
     {
-        if (bondCloud.getColorMap() != atoms.getColorMap())
-            bondCloud.setColorMap(const_cast<osgGlyphs::ColorMap*>(atoms.getColorMap()));
-        if (bondCloud.getScalarRangeIsAutomatic() ||
-            bondCloud.getScalarRangeMin() != atoms.getScalarRangeMin() ||
-            bondCloud.getScalarRangeMax() != atoms.getScalarRangeMax())
-            bondCloud.setScalarRange(atoms.getScalarRangeMin(), atoms.getScalarRangeMax());
         osg::ref_ptr<osg::FloatArray> halves = bondCloud.getScalars();
         if (!halves)
             halves = new osg::FloatArray;

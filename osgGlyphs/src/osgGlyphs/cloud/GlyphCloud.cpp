@@ -406,6 +406,7 @@ void GlyphCloud::updateChunkUse()
 
 void GlyphCloud::updateChunks()
 {
+    catchUpWithResizedArrays();
     {
         std::lock_guard<std::mutex> lock(_pickingMutex);
         _pickingChunks.reset();
@@ -501,6 +502,17 @@ void GlyphCloud::updateSelectionElements()
     _selectionElements->dirty();
 }
 
+bool GlyphCloud::catchUpWithResizedArrays()
+{
+    if (countGlyphs(false) == _numGlyphs)
+        return false;
+    // An array resized in place and not yet announced by dirtyGlyphs(), then another setter: what
+    // was packed and the chunks no longer cover the arrays, so they are brought up to date first.
+    updateGlyphs(false);
+    dirtyBound();
+    return true;
+}
+
 void GlyphCloud::dirtyGlyphs()
 {
     updateGlyphs();
@@ -536,6 +548,8 @@ GlyphArrays GlyphCloud::getGlyphArrays() const
 
 void GlyphCloud::buildPrimitives()
 {
+    if (catchUpWithResizedArrays())
+        return; // updateGlyphs() ended here
     const GlyphTechnique* technique = getEffectiveTechnique();
     const bool wasReordered = _drawnArrays->isReordered();
     if (_chunks)

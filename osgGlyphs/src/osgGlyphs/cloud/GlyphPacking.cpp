@@ -329,6 +329,7 @@ void GlyphCloud::packRadius(unsigned int i)
 
 void GlyphCloud::packRadii()
 {
+    catchUpWithResizedArrays();
     _unpacked->resize(_compressedAttributes ? 0 : _numGlyphs);
     for (unsigned int i = 0; i < _numGlyphs; ++i)
         packRadius(i);
@@ -358,6 +359,7 @@ float GlyphCloud::dequantiseScalar(uint16_t step, const osg::Vec2& range)
 
 void GlyphCloud::packScalars()
 {
+    catchUpWithResizedArrays();
     // The scalar over the quantisation range: 16 bits in the packed word, or a float in [0, 1]
     // (beyond it where the data is) when uncompressed.
     const double span = double(_quantisedMax) - double(_quantisedMin);
@@ -475,6 +477,7 @@ float GlyphCloud::decodeRadius(unsigned int i) const
 
 void GlyphCloud::packPositions()
 {
+    catchUpWithResizedArrays();
     const unsigned int count = _compressedPositions && _positions.valid() ? _positions->size() : 0;
     const detail::PositionGrid grid =
         count ? detail::PositionGrid::fit(*_positions, count) : detail::PositionGrid();
