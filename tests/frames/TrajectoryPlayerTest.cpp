@@ -185,6 +185,31 @@ TEST(TrajectoryPlayer, APictureNotDecodedIsLateAndTheLastStays)
     EXPECT_EQ(player.getStatistics().late, 1u); // counted once per picture
 }
 
+TEST(TrajectoryPlayer, APictureShownLateStaysAWholeInterval)
+{
+    // A picture wanted but not shown yet, as a late one is: the update that shows it must not go
+    // on to show the next one over it, though that one is due and decoded too. It did, and under
+    // load PlaysEveryPictureInOrderAtTheRate never saw the late picture and waited for it forever.
+    const std::string path = scratchFolder("overdue") + "/motion.lammpstrj";
+    writeFile(path, lammpsDump(10, 40));
+    Playback playback(path, FrameCache::DEFAULT_BUDGET_BYTES);
+    TrajectoryPlayer& player = *playback.player;
+    player.setLoop(false);
+    player.setPlaying(true);
+    player.update(0.0);
+    std::string error;
+    for (std::size_t frame : {3, 4})
+        ASSERT_TRUE(player.getCache()->getFrame(frame, error).valid()) << error;
+    player.seek(3.0);
+    player.update(1.0); // ten pictures due: the one wanted is shown, and only it
+    ASSERT_EQ(player.getPosition(), 3.0);
+    expectAnalytic(*playback.cloud, *playback.source->readFrame(3, error), 3.0);
+    player.update(2.0);
+    EXPECT_EQ(player.getPosition(), 4.0);
+    EXPECT_EQ(player.getStatistics().shown, 2u);
+    EXPECT_EQ(player.getStatistics().late, 0u);
+}
+
 TEST(TrajectoryPlayer, AMalformedFrameIsSkippedAndPlaybackGoesOn)
 {
     const std::string path = scratchFolder("skip") + "/broken.lammpstrj";

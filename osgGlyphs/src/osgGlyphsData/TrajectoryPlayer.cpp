@@ -100,9 +100,13 @@ void TrajectoryPlayer::update(double time)
     const double elapsed = _hasTime ? std::max(time - _lastTime, 0.0) : 0.0;
     _hasTime = true;
     _lastTime = time;
-    if (_shownPosition != _position && !show(_position, false))
+    if (_shownPosition != _position)
     {
-        if (!_lateCounted)
+        // A late (or sought) picture: once shown, it stays a whole interval, the next one is not
+        // shown over it in this update.
+        if (show(_position, false))
+            _due = 0.0;
+        else if (!_lateCounted)
         {
             ++_statistics.late;
             _lateCounted = true;
