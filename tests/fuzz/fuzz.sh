@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs one fuzz target for a time, from a scratch corpus seeded with tests/fuzz/corpus/<format>,
-# the samples of share/data and the files of tests/data/formats in that format:
+# the samples of share/data and the files of tests/data/formats and tests/data/bonds in that format:
 #   bash tests/fuzz/fuzz.sh <build dir> <format> <seconds>
 # The scratch corpus (<build dir>/fuzz-corpus/<format>) grows from run to run; crashes, leaks and
 # inputs slower than 10 s land in <build dir>/fuzz-artifacts/<format>/. Prints libFuzzer's final
@@ -16,9 +16,10 @@ mkdir -p "$corpus" "$artifacts"
 seeds=()
 [[ -d "$source_dir/tests/fuzz/corpus/$format" ]] && seeds=("$source_dir/tests/fuzz/corpus/$format")
 shopt -s globstar nullglob
-for sample in "$source_dir"/share/data/* "$source_dir"/tests/data/formats/**/*."$format"; do
+for sample in "$source_dir"/share/data/* "$source_dir"/tests/data/{formats,bonds}/**/*; do
     case "$format" in
     lammps) [[ "$sample" == *.lammpstrj || "$sample" == *.dump ]] ;;
+    lammpsdata) [[ "$sample" == *.data ]] ;;
     *) [[ "$sample" == *."$format" || ( "$format" == xyz && "$sample" == *.extxyz ) ]] ;;
     esac && cp -n "$sample" "$corpus/" || true
 done

@@ -164,7 +164,9 @@ TEST(TensorGlyphs, ColourByTraceAnisotropyAndSignedEigenvalues)
         const ColorKey& key = mapper.getColorKey();
         EXPECT_EQ(key.title, quantity);
         if (std::string(quantity) != "anisotropy")
+        {
             EXPECT_EQ(key.min, -key.max) << quantity << ": a range even about zero shows the sign";
+        }
     }
 }
 

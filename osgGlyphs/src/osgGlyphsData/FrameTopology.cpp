@@ -18,6 +18,29 @@ bool isPerFrame(const std::string& name)
     return std::find(std::begin(perFrame), std::end(perFrame), name) != std::end(perFrame);
 }
 
+/** The bonds between the atoms of a range, indexed from its first atom; the list itself (shared)
+ * for a range that starts at the first atom and holds every bond. */
+std::shared_ptr<const PointData::BondList>
+bondsOfRange(const std::shared_ptr<const PointData::BondList>& bonds, const PointRange& range)
+{
+    auto inRange = [&](uint32_t atom) { return atom >= range.begin && atom < range.end; };
+    const bool all =
+        std::all_of(bonds->begin(), bonds->end(),
+                    [&](const Bond& bond) { return inRange(bond.first) && inRange(bond.second); });
+    if (all && range.begin == 0)
+        return bonds;
+    auto part = std::make_shared<PointData::BondList>();
+    for (Bond bond : *bonds)
+    {
+        if (!inRange(bond.first) || !inRange(bond.second))
+            continue;
+        bond.first -= static_cast<uint32_t>(range.begin);
+        bond.second -= static_cast<uint32_t>(range.begin);
+        part->push_back(bond);
+    }
+    return part;
+}
+
 }
 
 FrameTopology::FrameTopology(const std::string& path, PointData* atoms) : _path(path), _atoms(atoms)
@@ -82,5 +105,7 @@ bool FrameTopology::apply(PointData& frame, const PointShare& share, const std::
         if (!labels.empty())
             frame.setColumnLabels(name, labels);
     }
+    if (_atoms->getBonds() && !frame.getBonds())
+        frame.setBonds(bondsOfRange(_atoms->getBonds(), range));
     return true;
 }

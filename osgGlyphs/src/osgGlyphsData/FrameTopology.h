@@ -29,7 +29,8 @@ public:
     std::size_t getNumAtoms() const { return _atoms->getNumPoints(); }
 
     /** Adds to a frame (its share's rows, when share is not the whole) the topology's columns that
-     * it lacks, with their labels and origins; a frame that has them all is left as it is. False
+     * it lacks, with their labels and origins, and its bonds where the frame has none (the list
+     * itself, shared, for the whole); a frame that has them all is left as it is. False
      * with one line naming both files and both atom counts when they disagree. trajectory and
      * frameIndex are for that message. */
     bool apply(PointData& frame, const PointShare& share, const std::string& trajectory,

@@ -8,7 +8,10 @@
 //   CRYST1: the cell (a b c alpha beta gamma), for the frames after it;
 //   MODEL ... ENDMDL: each model a frame; in a file without MODEL records, the atoms up to each END
 //     (VMD's trajectories), or the whole file, are a frame.
-// Read past: everything else (REMARK, TER, ANISOU, CONECT: bonds are not read yet, ...).
+//   CONECT: bonds between atoms named by their serials (columns 7-11 and 12-31), wherever they are
+//     in the file, for every frame (PointData::getBonds()); each bond once though listed from both
+//     atoms.
+// Read past: everything else (REMARK, TER, ANISOU, ...).
 // The file's lines are scanned once at opening for the frames' byte ranges and atom counts.
 
 #include "CellBox.h"
@@ -16,9 +19,11 @@
 #include "Formats.h"
 #include "TextLines.h"
 
+#include "../ListedBonds.h"
 #include "../readers/Fields.h"
 
 #include <cmath>
+#include <unordered_map>
 
 using namespace osgGlyphsData;
 using namespace osgGlyphsData::formats;
@@ -164,6 +169,8 @@ public:
                 atomRecord(lines, block);
             else if (record == "CRYST1")
                 _cell = readCell(lines, line);
+            else if (record == "CONECT")
+                conectRecord(lines, line);
             else if (record == "MODEL")
                 modelRecord(lines, block);
             else if (record == "ENDMDL")
@@ -204,6 +211,22 @@ private:
             lines.fail("an atom record outside MODEL ... ENDMDL in a file of models");
         if (block.atoms++ == 0)
             block.firstAtomLine = lines.getLineNumber();
+    }
+
+    /** A CONECT record: the atom of columns 7-11 bonded to each of columns 12-31 given. */
+    void conectRecord(const TextLines& lines, std::string_view line)
+    {
+        const int64_t atom = parseFixedInteger(lines, columns(line, 7, 11), 7, 11, "CONECT's atom serial");
+        for (std::size_t first = 12; first <= 27; first += 5)
+        {
+            const std::string_view field = columns(line, first, first + 4);
+            if (field.empty())
+                continue;
+            const int64_t other = parseFixedInteger(lines, field, first, first + 4, "CONECT's bonded serial");
+            if (other == atom)
+                lines.fail("CONECT: atom " + std::to_string(atom) + " bonded to itself");
+            _conect.push_back({atom, other, lines.getLineNumber()});
+        }
     }
 
     void modelRecord(const TextLines& lines, Block& block)
@@ -295,6 +318,7 @@ private:
         TextLines lines(_file, place, frame.info.offset, frame.info.end, frame.info.line);
         std::string_view line;
         uint64_t atom = 0;
+        AtomSerials serials;
         while (lines.next(line))
         {
             const std::string_view record = recordOf(line);
@@ -302,6 +326,9 @@ private:
             {
                 if (atom >= range.begin && atom < range.end)
                     atoms.append(lines, line);
+                if (!_conect.empty())
+                    serials.add(parseFixedInteger(lines, columns(line, 7, 11), 7, 11, "serial"), atom,
+                                lines.getLineNumber());
                 ++atom;
             }
             else if (record == "CRYST1")
@@ -314,9 +341,52 @@ private:
         if (cell.known)
             setCellLengthsAngles(*data, cell.lengths[0], cell.lengths[1], cell.lengths[2], cell.angles[0],
                                  cell.angles[1], cell.angles[2]);
+        if (!_conect.empty())
+            data->setBonds(conectBonds(place, serials, range, frame.info.points));
         data->setTimestep(frame.info.timestep);
         data->setFilePointCount(frame.info.points);
         return data;
+    }
+
+    /** The row in the frame of each atom serial; serials given twice, which CONECT cannot name. */
+    struct AtomSerials
+    {
+        std::unordered_map<int64_t, uint32_t> rows;
+        std::unordered_map<int64_t, uint64_t> repeated; // serial -> a line that repeats it
+
+        void add(int64_t serial, uint64_t row, uint64_t line)
+        {
+            if (!rows.emplace(serial, static_cast<uint32_t>(row)).second)
+                repeated.emplace(serial, line);
+        }
+    };
+
+    std::shared_ptr<const PointData::BondList> conectBonds(const TextPlace& place, const AtomSerials& serials,
+                                                           const PointRange& range, uint64_t atoms) const
+    {
+        if (atoms >= NOT_IN_FRAME)
+            place.fail(_conect.front().line, "CONECT in a frame of more atoms than bonds can index");
+        std::vector<std::pair<uint32_t, uint32_t>> rows;
+        rows.reserve(_conect.size());
+        auto rowOf = [&](int64_t serial, uint64_t line)
+        {
+            const auto repeated = serials.repeated.find(serial);
+            if (repeated != serials.repeated.end())
+                place.fail(line, "CONECT names atom serial " + std::to_string(serial) +
+                                     ", which more than one atom has (line " +
+                                     std::to_string(repeated->second) + " repeats it)");
+            const auto row = serials.rows.find(serial);
+            if (row == serials.rows.end())
+                place.fail(line, "CONECT names atom serial " + std::to_string(serial) +
+                                     ", which no atom of the frame has");
+            return row->second;
+        };
+        for (const ConectBond& bond : _conect)
+            rows.emplace_back(rowOf(bond.atom, bond.line), rowOf(bond.other, bond.line));
+        std::vector<uint32_t> frameIndexOfRow(static_cast<std::size_t>(atoms), NOT_IN_FRAME);
+        for (uint64_t row = range.begin; row < range.end; ++row)
+            frameIndexOfRow[static_cast<std::size_t>(row)] = static_cast<uint32_t>(row - range.begin);
+        return makeListedBonds(rows, frameIndexOfRow);
     }
 
     std::vector<PdbFrame> _frames;
@@ -325,6 +395,13 @@ private:
     std::size_t _emptyModels = 0;
     /** The cell of the last CRYST1 the scan met. */
     Cell _cell;
+    /** The bonds of the CONECT records, by serial, with their lines. */
+    struct ConectBond
+    {
+        int64_t atom, other;
+        uint64_t line;
+    };
+    std::vector<ConectBond> _conect;
 };
 
 }

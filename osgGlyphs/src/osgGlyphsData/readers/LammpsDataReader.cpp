@@ -3,13 +3,16 @@
 // sections, each a keyword line ("Masses", "Atoms # full") and its lines. Read: the atom count and
 // types, the box, Masses (each atom's type's mass, as a column "mass"), Atoms of the styles atomic,
 // charge, molecular (bond, angle) and full (id, mol, type, q, x y z; ix iy iz where the image flags
-// are given) and sphere (diameter, density), and Velocities (vx vy vz). The other sections
-// (coefficients, Bonds, Angles, type labels, ...) are read past. One frame: the atoms sorted by id
+// are given) and sphere (diameter, density), Velocities (vx vy vz) and Bonds (the frame's bond
+// list). The other sections (coefficients, Angles, type labels, ...) are read past. One frame: the
+// atoms sorted by id
 // (LAMMPS writes them in its own order), so that they match a trajectory written in id order (a
 // dump sorted by id, DCD and XTC of LAMMPS or of MDAnalysis), as its topology.
 
 #include "Fields.h"
 #include "Readers.h"
+
+#include "../ListedBonds.h"
 
 #include <algorithm>
 #include <cmath>
@@ -130,6 +133,13 @@ public:
             addColumn("mass", atomMasses());
         if (_hasBounds[0] && _hasBounds[1] && _hasBounds[2])
             frame->setBox(osg::BoundingBoxd(_lo[0], _lo[1], _lo[2], _hi[0], _hi[1], _hi[2]), _tilt);
+        if (_bondsLine != 0)
+        {
+            std::vector<uint32_t> frameIndexOfRow(order.size(), NOT_IN_FRAME);
+            for (std::size_t i = 0; i < count; ++i)
+                frameIndexOfRow[order[range.begin + i]] = static_cast<uint32_t>(i);
+            frame->setBonds(makeListedBonds(_bonds, frameIndexOfRow));
+        }
         frame->setTimestep(_timestep);
         frame->setFilePointCount(order.size());
         return frame;
@@ -170,6 +180,10 @@ private:
             _atoms = parseCount(words[0], "the atom count");
         else if (words.size() == 3 && words[1] == "atom" && words[2] == "types")
             _types = parseCount(words[0], "the atom type count");
+        else if (words.size() == 2 && words[1] == "bonds")
+            _bondCount = parseCount(words[0], "the bond count");
+        else if (words.size() == 3 && words[1] == "bond" && words[2] == "types")
+            _bondTypes = parseCount(words[0], "the bond type count");
         else if (words.size() == 6 && words[3] == "xy" && words[4] == "xz" && words[5] == "yz")
             _tilt.set(parseFinite(words[0], "xy"), parseFinite(words[1], "xz"), parseFinite(words[2], "yz"));
         else if (words.size() == 4)
@@ -187,7 +201,7 @@ private:
                 _hasBounds[axis] = true;
             }
         }
-        // Other counts (bonds, angles, ellipsoids, extra ... per atom) are of sections not read.
+        // Other counts (angles, ellipsoids, extra ... per atom) are of sections not read.
     }
 
     /** Reads the section of a keyword line; returns the next keyword line, empty at the end. */
@@ -202,6 +216,8 @@ private:
             readAtoms(style);
         else if (keyword == "Velocities")
             readVelocities();
+        else if (keyword == "Bonds")
+            readBonds();
         else
             return skipSection();
         return nextKeyword(keyword);
@@ -334,10 +350,7 @@ private:
     {
         if (_atomsLine == 0)
             _scanner.fail("Velocities before Atoms");
-        std::unordered_map<int64_t, std::size_t> atomOf;
-        atomOf.reserve(_ids.size());
-        for (std::size_t i = 0; i < _ids.size(); ++i)
-            atomOf.emplace(_ids[i], i);
+        const std::unordered_map<int64_t, std::size_t>& atomOf = rowsOfIds();
         for (std::vector<double>& axis : _velocities)
             axis.assign(_ids.size(), std::nan(""));
         std::vector<std::string_view> words;
@@ -357,6 +370,59 @@ private:
                           _velocities[axis][atom->second] =
                               parseFinite(words[1 + axis], std::string("Velocities: v") + "xyz"[axis]);
                       ++_velocityCount;
+                  });
+    }
+
+    /** The row of each atom id, for the sections after Atoms. */
+    const std::unordered_map<int64_t, std::size_t>& rowsOfIds()
+    {
+        if (_rowOfId.empty())
+        {
+            _rowOfId.reserve(_ids.size());
+            for (std::size_t i = 0; i < _ids.size(); ++i)
+                _rowOfId.emplace(_ids[i], i);
+        }
+        return _rowOfId;
+    }
+
+    void readBonds()
+    {
+        if (_atomsLine == 0)
+            _scanner.fail("Bonds before Atoms");
+        if (_bondsLine != 0)
+            _scanner.fail("a second Bonds section (the first is at line " + std::to_string(_bondsLine) + ")");
+        _bondsLine = _scanner.getLineNumber();
+        if (_ids.size() > NOT_IN_FRAME)
+            _scanner.fail("Bonds between more atoms than bonds can index (2^32 - 1)");
+        const std::unordered_map<int64_t, std::size_t>& rowOf = rowsOfIds();
+        _bonds.reserve(_scanner.boundedReserve(_bondCount, 8));
+        std::vector<std::string_view> words;
+        readLines(_bondCount, "Bonds", "bond",
+                  [&](std::string_view text)
+                  {
+                      splitBlanks(text, words);
+                      if (words.size() != 4)
+                          _scanner.fail("Bonds: " + std::to_string(words.size()) +
+                                        " fields, expected 4 (id type atom1 atom2)");
+                      uint64_t type = 0;
+                      if (!parseUInt64(words[1], type) || type == 0 || (_bondTypes > 0 && type > _bondTypes))
+                          _scanner.fail("Bonds: the bond type " + quote(words[1]) + " is not one of the " +
+                                        std::to_string(_bondTypes) + " bond types");
+                      std::size_t rows[2] = {0, 0};
+                      for (int end = 0; end < 2; ++end)
+                      {
+                          int64_t id = 0;
+                          if (!parseInt64(words[2 + end], id))
+                              _scanner.fail("Bonds: the atom id " + quote(words[2 + end]) +
+                                            " is not an integer");
+                          const auto row = rowOf.find(id);
+                          if (row == rowOf.end())
+                              _scanner.fail("Bonds: atom id " + std::to_string(id) + " is not in Atoms");
+                          rows[end] = row->second;
+                      }
+                      if (rows[0] == rows[1])
+                          _scanner.fail("Bonds: atom id " + quote(words[2]) + " bonded to itself");
+                      _bonds.emplace_back(static_cast<uint32_t>(rows[0]), static_cast<uint32_t>(rows[1]));
                   });
     }
 
@@ -424,6 +490,12 @@ private:
     std::vector<uint64_t> _lines;
     std::vector<double> _velocities[3];
     std::size_t _velocityCount = 0;
+    uint64_t _bondCount = 0;
+    uint64_t _bondTypes = 0;
+    uint64_t _bondsLine = 0;
+    /** The bonds, by the rows of their atoms. */
+    std::vector<std::pair<uint32_t, uint32_t>> _bonds;
+    std::unordered_map<int64_t, std::size_t> _rowOfId;
 };
 
 }

@@ -1,0 +1,247 @@
+/* The bonds files list (PointData::getBonds()): a LAMMPS data file's Bonds and the CONECT records of
+ * the PDB that MDAnalysis wrote of it (tests/data/bonds, make_pdb.py), against the data file's own
+ * Bonds lines read here; a LAMMPS dump given them by the data file as its topology, every bond the
+ * length LAMMPS's harmonic bonds keep in every frame; shares; and files that lie. */
+
+#include "FormatTestData.h"
+
+#include <osgGlyphsData/BondGlyphs>
+#include <osgGlyphsData/PointReader>
+#include <osgGlyphsData/PointShare>
+
+#include <set>
+#include <sstream>
+
+using namespace formattest;
+using namespace osgGlyphsData;
+
+namespace
+{
+
+std::string bondData(const std::string& name)
+{
+    return dataPath("../bonds/" + name);
+}
+
+typedef std::set<std::pair<int64_t, int64_t>> IdPairs;
+
+struct BadFile
+{
+    std::string name, text, expected;
+};
+
+/** The Bonds section of a LAMMPS data file, read line by line here: each bond's atom ids, smaller
+ * first. */
+IdPairs bondsOfDataFile(const std::string& path)
+{
+    std::istringstream text(readBytes(path));
+    std::string line;
+    while (std::getline(text, line) && line.rfind("Bonds", 0) != 0)
+    {
+    }
+    IdPairs pairs;
+    while (std::getline(text, line))
+    {
+        std::istringstream fields(line);
+        int64_t id = 0, type = 0, a = 0, b = 0;
+        if (line.empty() && pairs.empty())
+            continue;
+        if (!(fields >> id >> type >> a >> b))
+            break;
+        pairs.emplace(std::min(a, b), std::max(a, b));
+    }
+    return pairs;
+}
+
+/** A frame's bonds by the ids of their atoms. */
+IdPairs bondsById(const PointData& frame)
+{
+    IdPairs pairs;
+    const std::vector<float>* ids = frame.getColumn("id");
+    if (!frame.getBonds() || !ids)
+        return pairs;
+    for (const Bond& bond : *frame.getBonds())
+    {
+        const auto a = static_cast<int64_t>((*ids)[bond.first]),
+                   b = static_cast<int64_t>((*ids)[bond.second]);
+        pairs.emplace(std::min(a, b), std::max(a, b));
+    }
+    return pairs;
+}
+
+/** Expects a frame's bonds to be each pair once, sorted, with zero images. */
+void expectWellFormed(const PointData& frame)
+{
+    ASSERT_TRUE(frame.getBonds());
+    const PointData::BondList& bonds = *frame.getBonds();
+    for (std::size_t k = 0; k < bonds.size(); ++k)
+    {
+        const Bond& bond = bonds[k];
+        ASSERT_LT(bond.first, bond.second) << k;
+        ASSERT_LT(bond.second, frame.getNumPoints()) << k;
+        EXPECT_EQ(bond.image[0] | bond.image[1] | bond.image[2], 0) << k;
+        if (k > 0)
+            ASSERT_TRUE(std::make_pair(bonds[k - 1].first, bonds[k - 1].second) <
+                        std::make_pair(bond.first, bond.second))
+                << k;
+    }
+}
+
+/** The lengths of a frame's bonds to the nearest images in its periodic box. */
+std::vector<double> bondLengths(const PointData& frame)
+{
+    std::vector<osg::Vec3f> positions(frame.getNumPoints());
+    for (std::size_t i = 0; i < positions.size(); ++i)
+        positions[i].set((*frame.getColumn("x"))[i], (*frame.getColumn("y"))[i], (*frame.getColumn("z"))[i]);
+    const PeriodicBox box(frame.getBox(), frame.getTilt());
+    std::vector<Bond> bonds = *frame.getBonds();
+    std::string error;
+    EXPECT_TRUE(setNearestImages(positions, box, bonds, error)) << error;
+    std::vector<double> lengths;
+    for (const Bond& bond : bonds)
+        lengths.push_back((osg::Vec3d(positions[bond.second]) + box.getImageOffset(bond.image) -
+                           osg::Vec3d(positions[bond.first]))
+                              .length());
+    return lengths;
+}
+
+/** Every bond of the chains is near the harmonic bonds' rest length, 0.97 (LAMMPS's Langevin
+ * dynamics at T = 1 stretch them between 0.73 and 1.22): atoms that are not bonded are far apart. */
+void expectBondedLengths(const PointData& frame)
+{
+    const std::vector<double> lengths = bondLengths(frame);
+    ASSERT_FALSE(lengths.empty());
+    for (std::size_t k = 0; k < lengths.size(); ++k)
+        ASSERT_TRUE(lengths[k] > 0.6 && lengths[k] < 1.4) << "bond " << k << ": " << lengths[k];
+}
+
+}
+
+TEST(BondList, ALammpsDataFileListsItsBonds)
+{
+    osg::ref_ptr<PointData> frame = frameOf(*openFrames(bondData("polymer.data")), 0);
+    ASSERT_TRUE(frame);
+    ASSERT_TRUE(frame->getBonds());
+    EXPECT_EQ(frame->getBonds()->size(), 180u);
+    expectWellFormed(*frame);
+    const IdPairs truth = bondsOfDataFile(bondData("polymer.data"));
+    ASSERT_EQ(truth.size(), 180u);
+    EXPECT_EQ(bondsById(*frame), truth);
+    expectBondedLengths(*frame); // across the periodic faces too: the file wraps the atoms
+
+    // A data file without Bonds lists none.
+    EXPECT_FALSE(frameOf(*openFrames(dataPath("pdb/melt.data")), 0)->getBonds());
+}
+
+TEST(BondList, PdbConectListsTheSameBondsOnce)
+{
+    osg::ref_ptr<PointData> frame = frameOf(*openFrames(bondData("polymer.pdb")), 0);
+    ASSERT_TRUE(frame);
+    expectWellFormed(*frame);
+    EXPECT_EQ(bondsById(*frame), bondsOfDataFile(bondData("polymer.data")));
+    expectBondedLengths(*frame);
+
+    // A PDB without CONECT lists none.
+    EXPECT_FALSE(frameOf(*openFrames(dataPath("pdb/melt.pdb")), 0)->getBonds());
+}
+
+TEST(BondList, ATopologyGivesEveryFrameOfADumpItsBonds)
+{
+    FrameSourceOptions options;
+    options.topology = bondData("polymer.data");
+    osg::ref_ptr<FrameSource> dump = openFrames(bondData("polymer.lammpstrj"), options);
+    ASSERT_TRUE(dump);
+    ASSERT_EQ(dump->getNumFrames(), 5u);
+    EXPECT_FALSE(frameOf(*openFrames(bondData("polymer.lammpstrj")), 0)->getBonds());
+    const IdPairs truth = bondsOfDataFile(bondData("polymer.data"));
+    osg::ref_ptr<PointData> first = frameOf(*dump, 0);
+    for (std::size_t index : {4u, 0u, 2u})
+    {
+        SCOPED_TRACE("frame " + std::to_string(index));
+        osg::ref_ptr<PointData> frame = frameOf(*dump, index);
+        ASSERT_TRUE(frame && frame->getBonds());
+        EXPECT_EQ(bondsById(*frame), truth);
+        expectBondedLengths(*frame);
+        // One list for every frame: its memory does not grow with the frames.
+        EXPECT_EQ(frame->getBonds().get(), first->getBonds().get());
+    }
+}
+
+TEST(BondList, SharesHoldTheBondsBetweenTheirOwnAtoms)
+{
+    const IdPairs truth = bondsOfDataFile(bondData("polymer.data"));
+    for (const std::string& file : {std::string("polymer.data"), std::string("polymer.pdb")})
+    {
+        SCOPED_TRACE(file);
+        IdPairs inShares;
+        std::size_t crossing = 0;
+        for (unsigned int index = 0; index < 5; ++index)
+        {
+            FrameSourceOptions options;
+            options.share = {index, 5};
+            osg::ref_ptr<PointData> part = frameOf(*openFrames(bondData(file), options), 0);
+            ASSERT_TRUE(part);
+            expectWellFormed(*part);
+            const IdPairs own = bondsById(*part);
+            inShares.insert(own.begin(), own.end());
+            // The bonds from this share's atoms to the next share's (ids 1... in file order).
+            const PointRange range = getShareRange(options.share, 192);
+            for (const auto& [a, b] : truth)
+                crossing += uint64_t(a - 1) >= range.begin && uint64_t(a - 1) < range.end &&
+                                    uint64_t(b - 1) >= range.end
+                                ? 1
+                                : 0;
+        }
+        EXPECT_GT(crossing, 0u);
+        EXPECT_EQ(inShares.size(), truth.size() - crossing);
+        for (const auto& pair : inShares)
+            EXPECT_EQ(truth.count(pair), 1u) << pair.first << "-" << pair.second;
+    }
+}
+
+TEST(BondList, MalformedBondsFailNamingTheFileLineAndWhat)
+{
+    const std::string header = "title\n2 atoms\n1 atom types\n1 bonds\n1 bond types\n\n";
+    const std::string atoms = "Atoms # atomic\n\n1 1 0 0 0\n2 1 0 0 1\n\n";
+    const std::vector<BadFile> cases = {
+        {"missing atom", header + atoms + "Bonds\n\n1 1 1 3\n", ":14: Bonds: atom id 3 is not in Atoms"},
+        {"self", header + atoms + "Bonds\n\n1 1 2 2\n", ":14: Bonds: atom id '2' bonded to itself"},
+        {"before atoms", header + "Bonds\n\n1 1 1 2\n\n" + atoms, ":7: Bonds before Atoms"},
+        {"fields", header + atoms + "Bonds\n\n1 1 1\n", ":14: Bonds: 3 fields, expected 4"},
+        {"type", header + atoms + "Bonds\n\n1 2 1 2\n", ":14: Bonds: the bond type '2' is not one of the 1"},
+        {"too few", "title\n2 atoms\n1 atom types\n2 bonds\n\n" + atoms + "Bonds\n\n1 1 1 2\n",
+         "expected line 2 of the 2 of Bonds"},
+        {"no count", "title\n2 atoms\n1 atom types\n\n" + atoms + "Bonds\n\n1 1 1 2\n",
+         "Bonds without a count of bonds in the header"},
+    };
+    for (const BadFile& bad : cases)
+    {
+        SCOPED_TRACE(bad.name);
+        const std::string path = writeScratchFile("bad.data", bad.text);
+        const std::string error = firstError(path, "lammpsdata");
+        EXPECT_EQ(error.find(path), 0u) << error;
+        EXPECT_NE(error.find(bad.expected), std::string::npos) << error;
+    }
+
+    const std::string pdbAtoms =
+        "ATOM      1  C   UNK X   1       0.000   0.000   0.000  1.00  0.00           C\n"
+        "ATOM      2  C   UNK X   1       1.000   0.000   0.000  1.00  0.00           C\n";
+    const std::vector<BadFile> pdbCases = {
+        {"unknown serial", pdbAtoms + "CONECT    1    3\nEND\n",
+         ":3: frame 0: CONECT names atom serial 3, which no atom of the frame has"},
+        {"repeated serial",
+         pdbAtoms + "ATOM      2  C   UNK X   1       2.000   0.000   0.000  1.00  0.00           C\n" +
+             "CONECT    1    2\nEND\n",
+         ":4: frame 0: CONECT names atom serial 2, which more than one atom has (line 3 repeats it)"},
+        {"self", pdbAtoms + "CONECT    1    1\nEND\n", ":3: CONECT: atom 1 bonded to itself"},
+        {"not a serial", pdbAtoms + "CONECT    1  two\nEND\n", ":3:"},
+    };
+    for (const BadFile& bad : pdbCases)
+    {
+        SCOPED_TRACE(bad.name);
+        const std::string path = writeScratchFile("bad.pdb", bad.text);
+        const std::string error = firstError(path, "pdb");
+        EXPECT_EQ(error.find(path), 0u) << error;
+        EXPECT_NE(error.find(bad.expected), std::string::npos) << error;
+    }
+}
