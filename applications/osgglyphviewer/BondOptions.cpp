@@ -12,16 +12,29 @@
 
 void describeBondOptions(osg::ApplicationUsage& usage)
 {
+    usage.addCommandLineOption("--bonds",
+                               "Draw the bonds the file lists (a LAMMPS data file's Bonds, PDB CONECT, those "
+                               "of --topology), and make a file without them an error. They are drawn by "
+                               "default where the file lists them.");
+    usage.addCommandLineOption("--no-bonds", "Do not draw the bonds the file lists.");
     usage.addCommandLineOption("--bond-cutoff <r>",
                                "Draw bonds between atoms at most r apart (in the positions' units), across "
                                "the faces of the frame's box where the file gives one; found again for each "
-                               "frame of a trajectory. Each half of a bond is coloured as its atom.");
+                               "frame of a trajectory, instead of the bonds the file lists. Each half of a "
+                               "bond is coloured as its atom.");
     usage.addCommandLineOption(
         "--bond-radius <r>", "The radius of the bonds' cylinders (default 0.4 x the smallest atom radius).");
 }
 
 bool readBondOptions(osg::ArgumentParser& arguments, BondOptions& options, std::string& error)
 {
+    options.required = arguments.read("--bonds");
+    options.listed = !arguments.read("--no-bonds");
+    if (options.required && !options.listed)
+    {
+        error = "--bonds and --no-bonds contradict each other";
+        return false;
+    }
     if (arguments.read("--bond-cutoff", options.cutoff) &&
         !(options.cutoff > 0.0 && std::isfinite(options.cutoff)))
     {
@@ -34,9 +47,14 @@ bool readBondOptions(osg::ArgumentParser& arguments, BondOptions& options, std::
         error = "--bond-radius needs a radius above 0";
         return false;
     }
-    if (options.radius > 0.0f && !options.enabled())
+    if (options.enabled() && options.required)
     {
-        error = "--bond-radius needs --bond-cutoff";
+        error = "--bonds draws the file's bonds, --bond-cutoff bonds by distance: give one of them";
+        return false;
+    }
+    if (options.radius > 0.0f && !options.enabled() && !options.listed)
+    {
+        error = "--bond-radius with --no-bonds draws nothing";
         return false;
     }
     return true;
@@ -58,14 +76,17 @@ bool getBondBox(const osgGlyphsData::PointData& frame, const osg::Vec3d& origin,
     return true;
 }
 
-/** Finds the bonds of the atoms' current positions and refills the bond cloud, whenever the atoms
- * have moved (their positions array changed); the box from the player's frame. */
+/** Refills the bond cloud whenever the atoms have moved (their positions array changed): the bonds
+ * found within the cutoff, or the listed ones to their nearest images; the box from the player's
+ * frame. */
 class BondUpdate : public osg::NodeCallback
 {
 public:
+    /** Bonds within cutoff, or the listed ones where cutoff is 0. */
     BondUpdate(osgGlyphs::GlyphCloud* atoms, osgGlyphs::GlyphCloud* bonds,
-               osgGlyphsData::TrajectoryPlayer* player, double cutoff)
-        : _atoms(atoms), _bonds(bonds), _player(player), _cutoffs(cutoff)
+               osgGlyphsData::TrajectoryPlayer* player, double cutoff,
+               std::shared_ptr<const osgGlyphsData::PointData::BondList> listed)
+        : _atoms(atoms), _bonds(bonds), _player(player), _cutoffs(cutoff), _listed(std::move(listed))
     {
     }
 
@@ -78,9 +99,18 @@ public:
         osgGlyphsData::PeriodicBox box;
         const bool hasBox = frame && getBondBox(*frame, _atoms->getOrigin(), box);
         static const std::vector<osg::Vec3f> none;
-        if (!osgGlyphsData::findBonds(positions ? positions->asVector() : none, {}, _cutoffs,
-                                      hasBox ? &box : nullptr, _list, error))
-            return false;
+        const std::vector<osg::Vec3f>& atoms = positions ? positions->asVector() : none;
+        if (_cutoffs.getDefaultCutoff() > 0.0)
+        {
+            if (!osgGlyphsData::findBonds(atoms, {}, _cutoffs, hasBox ? &box : nullptr, _list, error))
+                return false;
+        }
+        else
+        {
+            _list = *_listed;
+            if (hasBox && !osgGlyphsData::setNearestImages(atoms, box, _list, error))
+                return false;
+        }
         return osgGlyphsData::updateBondCloud(*_bonds, *_atoms, _list, hasBox ? &box : nullptr, error);
     }
 
@@ -107,6 +137,7 @@ private:
     osg::ref_ptr<osgGlyphs::GlyphCloud> _bonds;
     osg::ref_ptr<osgGlyphsData::TrajectoryPlayer> _player;
     osgGlyphsData::BondCutoffs _cutoffs;
+    std::shared_ptr<const osgGlyphsData::PointData::BondList> _listed;
     std::vector<osgGlyphsData::Bond> _list;
     const osg::Vec3Array* _seen = nullptr;
     unsigned int _seenCount = 0;
@@ -127,10 +158,18 @@ bool addBondCloud(osg::Group& group, osgGlyphs::GlyphCloud& atoms, const osgGlyp
         return false;
     }
     bonds->setDataVariance(osg::Object::DYNAMIC);
-    osg::ref_ptr<BondUpdate> update = new BondUpdate(&atoms, bonds.get(), player, options.cutoff);
+    const bool listed = !options.enabled();
+    if (listed && (!frame.getBonds() || frame.getBonds()->empty()))
+    {
+        error = frame.getSource() + ": --bonds: the file lists no bonds (a LAMMPS data file's Bonds, PDB "
+                                    "CONECT): give a --topology that does, or --bond-cutoff";
+        return false;
+    }
+    osg::ref_ptr<BondUpdate> update =
+        new BondUpdate(&atoms, bonds.get(), player, options.cutoff, listed ? frame.getBonds() : nullptr);
     if (!update->refresh(&frame, error))
     {
-        error = frame.getSource() + ": --bond-cutoff: " + error;
+        error = frame.getSource() + (listed ? ": bonds: " : ": --bond-cutoff: ") + error;
         return false;
     }
     // Its own group, after the atoms': its update callback runs after the player's has moved them.
@@ -140,8 +179,12 @@ bool addBondCloud(osg::Group& group, osgGlyphs::GlyphCloud& atoms, const osgGlyp
     holder->setUpdateCallback(update.get());
     group.addChild(holder.get());
     std::ostringstream text;
-    text << update->getNumBonds() << " bonds within " << options.cutoff
-         << (frame.hasBox() ? " (periodic)" : "") << ", radius " << radius;
+    text << update->getNumBonds() << " bonds";
+    if (listed)
+        text << " listed in the file";
+    else
+        text << " within " << options.cutoff;
+    text << (frame.hasBox() ? " (periodic)" : "") << ", radius " << radius;
     description = text.str();
     return true;
 }

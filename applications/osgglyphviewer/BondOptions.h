@@ -14,13 +14,22 @@
 
 #include <string>
 
-/** How bonds are drawn. */
+/** How bonds are drawn: those the file lists (LAMMPS data Bonds, PDB CONECT, a topology's), unless
+ * --no-bonds, or those within a cutoff instead. */
 struct BondOptions
 {
-    double cutoff = 0.0; // --bond-cutoff r: atoms at most r apart bond; 0: no bonds
-    float radius = 0.0f; // --bond-radius r; 0: 0.4 x the smallest atom radius
+    double cutoff = 0.0;   // --bond-cutoff r: atoms at most r apart bond; 0: the file's bonds
+    float radius = 0.0f;   // --bond-radius r; 0: 0.4 x the smallest atom radius
+    bool listed = true;    // false: --no-bonds
+    bool required = false; // --bonds: a file without a bond list is an error
 
+    /** Bonds by distance. */
     bool enabled() const { return cutoff > 0.0; }
+    /** Whether the bonds of frame are drawn. */
+    bool drawsBondsOf(const osgGlyphsData::PointData& frame) const
+    {
+        return enabled() || (listed && (required || (frame.getBonds() && !frame.getBonds()->empty())));
+    }
 };
 
 void describeBondOptions(osg::ApplicationUsage& usage);
@@ -29,11 +38,12 @@ void describeBondOptions(osg::ApplicationUsage& usage);
 bool readBondOptions(osg::ArgumentParser& arguments, BondOptions& options, std::string& error);
 
 /** Adds to group, after the atoms' cloud, the bonds of the atoms of frame (whose glyphs atoms
- * holds, in the same order) as a cloud of half-bonds coloured as their atoms: found within the
- * cutoff, across the faces of the frame's box where it has one (periodic along every edge). With a
- * player, the bonds are found again, in the update traversal, whenever the player has moved the
- * atoms (and with the box of the frame shown). description gets a few words for the console. False
- * with a one-line error. */
+ * holds, in the same order) as a cloud of half-bonds coloured as their atoms: the bonds the frame
+ * lists, or found within the cutoff, across the faces of the frame's box where it has one
+ * (periodic along every edge). With a player, the bonds follow the atoms, in the update traversal,
+ * whenever the player has moved them: found again within the cutoff, or the listed bonds drawn to
+ * the nearest images in the box of the frame shown. description gets a few words for the console.
+ * False with a one-line error. */
 bool addBondCloud(osg::Group& group, osgGlyphs::GlyphCloud& atoms, const osgGlyphsData::PointData& frame,
                   osgGlyphsData::TrajectoryPlayer* player, const BondOptions& options,
                   std::string& description, std::string& error);

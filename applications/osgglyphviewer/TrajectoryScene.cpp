@@ -143,7 +143,7 @@ osg::ref_ptr<ViewerScene> createTrajectoryScene(const ViewerOptions& options, st
     group->addChild(cloud.get());
     group->setUpdateCallback(player.get());
     std::string bonds;
-    if (options.bonds.enabled() &&
+    if (options.bonds.drawsBondsOf(*sampled->getFrame(0)) &&
         !addBondCloud(*group, *cloud, *sampled->getFrame(0), player.get(), options.bonds, bonds, error))
         return nullptr;
     ViewerScene::FrameSource frames = [group, player](std::size_t frame, std::string& frameError)

@@ -376,9 +376,9 @@ bool readViewerOptions(osg::ArgumentParser& arguments, ViewerOptions& options, s
         error = "--follow needs a file";
         return false;
     }
-    if (options.bonds.enabled() && options.file.empty())
+    if ((options.bonds.enabled() || options.bonds.required) && options.file.empty())
     {
-        error = "--bond-cutoff needs a file of atoms";
+        error = std::string(options.bonds.required ? "--bonds" : "--bond-cutoff") + " needs a file of atoms";
         return false;
     }
     const PlaybackOptions& playback = options.playback;

@@ -332,9 +332,10 @@ osg::ref_ptr<ViewerScene> createViewerScene(const ViewerOptions& options, std::s
         return nullptr;
     }
     const bool tiles = !options.file.empty() && isTileArchive(options.file);
-    if (options.bonds.enabled() && (tiles || sharing.isShared()))
+    if ((options.bonds.enabled() || options.bonds.required) && (tiles || sharing.isShared()))
     {
-        error = std::string("--bond-cutoff: bonds are drawn for a file of atoms on one process, not ") +
+        error = std::string(options.bonds.required ? "--bonds" : "--bond-cutoff") +
+                ": bonds are drawn for a file of atoms on one process, not " +
                 (tiles ? "for a tile archive" : "under mpirun");
         return nullptr;
     }

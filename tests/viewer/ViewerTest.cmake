@@ -3,7 +3,7 @@
 #         -DDATA_DIR=<data> -DWORK_DIR=<scratch> -P ViewerTest.cmake
 # Cases: render, cone, frame, malformed, unknown_column, unknown_option, frames, default, help,
 # stray_shaders, broken_shader, pick, hidden_cones, hidden_radius, hidden_sub_pixel, hidden_bounds,
-# far, vast, clip, radius_column, shadows, screen_effects, egl_device.
+# far, vast, clip, radius_column, bonds, shadows, screen_effects, egl_device.
 cmake_minimum_required(VERSION 3.25)
 
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -172,6 +172,34 @@ elseif(CASE STREQUAL "clip")
         list(APPEND nine --clip 1 0 0 ${i})
     endforeach()
     expect_failure("--clip: at most 8 planes" ${spheres} --offscreen ${nine})
+elseif(CASE STREQUAL "bonds")
+    # The chains of tests/data/bonds: the bonds a LAMMPS data file and a PDB list, and those a dump
+    # gets from its topology, drawn by default; --no-bonds; --bond-cutoff instead; contradictions.
+    set(polymer --size 160 120 --radius 0.35 --camera 13 -2 14 9 7 9 0 0 1)
+    foreach(file polymer.data polymer.pdb)
+        expect_success(${BONDS_DIR}/${file} --output ${file}.png ${polymer})
+        if(NOT "${out}${err}" MATCHES "180 bonds listed in the file \\(periodic\\), radius 0.14")
+            message(FATAL_ERROR "${file}: expected the 180 bonds it lists")
+        endif()
+    endforeach()
+    expect_success(${BONDS_DIR}/polymer.data --output atoms.png --no-bonds ${polymer})
+    if("${out}${err}" MATCHES "bonds listed")
+        message(FATAL_ERROR "--no-bonds: expected no bonds")
+    endif()
+    check(differ polymer.data.png atoms.png 0.01)
+    expect_success(${BONDS_DIR}/polymer.lammpstrj --topology ${BONDS_DIR}/polymer.data --frame 4
+        --output dump.png ${polymer})
+    if(NOT "${out}${err}" MATCHES "5 frames .*180 bonds listed in the file")
+        message(FATAL_ERROR "expected the topology's bonds")
+    endif()
+    expect_success(${BONDS_DIR}/polymer.data --output cutoff.png --bond-cutoff 1.1 ${polymer})
+    if(NOT "${out}${err}" MATCHES "181 bonds within 1.1")
+        message(FATAL_ERROR "--bond-cutoff: expected 181 bonds within 1.1")
+    endif()
+    expect_failure("--bonds and --no-bonds contradict each other" ${BONDS_DIR}/polymer.data --bonds --no-bonds)
+    expect_failure("--bonds draws the file's bonds, --bond-cutoff bonds by distance"
+        ${BONDS_DIR}/polymer.data --bonds --bond-cutoff 1)
+    expect_failure(".*spheres.lammpstrj: --bonds: the file lists no bonds" ${spheres} --bonds --offscreen)
 elseif(CASE STREQUAL "shadows")
     # From above and in front: the spheres, and with --shadows a ground plane below them with
     # their shadows on it (coverage: pixels unlike the bottom-left corner, the plane's).
