@@ -149,7 +149,7 @@ bool readLists(osg::ArgumentParser& arguments, BenchSettings& settings)
                    settings.techniques))
         return false;
     if (arguments.read("--shapes", text) &&
-        !parseList(arguments, "--shapes", text, "sphere, cone, arrow, cylinder, ellipsoid",
+        !parseList(arguments, "--shapes", text, "sphere, cone, arrow, cylinder, ellipsoid, superquadric",
                    osgGlyphs::parseShape, settings.shapes))
         return false;
     if (arguments.read("--n", text) &&

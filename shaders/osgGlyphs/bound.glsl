@@ -58,7 +58,7 @@ void keepVertexFromClipPlanes()
     gl_ClipDistance[7] = 1.0;
 }
 
-#if defined(OSGGLYPHS_DEPTH_PEEL) && !defined(OSGGLYPHS_VECTOR_SHAPE) && !defined(OSGGLYPHS_SHAPE_ELLIPSOID)
+#if defined(OSGGLYPHS_DEPTH_PEEL) && !defined(OSGGLYPHS_VECTOR_SHAPE) && !defined(OSGGLYPHS_AXES_SHAPE)
 // The most pixel centres per axis that a sphere's rectangle may hold for its vertex stage to
 // ray-cast them against the previous layer; larger spheres are left to the fragments.
 const float PEEL_TEST_CENTRES = 4.0;
@@ -117,7 +117,11 @@ bool glyphBound(Glyph glyph, out vec2 corners[4], out float nearestNdcZ)
 #ifdef OSGGLYPHS_VECTOR_SHAPE
     if (!vectorScreenBound(glyph.sphere.xyz, glyph.axis.xyz, glyph.axis.w, glyph.sphere.w, corners, nearestNdcZ))
         return false;
-#elif defined(OSGGLYPHS_SHAPE_ELLIPSOID)
+#elif defined(OSGGLYPHS_SHAPE_SUPERQUADRIC)
+    if (!ellipsoidScreenBound(glyph.sphere.xyz, glyph.semiAxes * superquadricBoundScale(glyph.exponents), corners,
+                              nearestNdcZ))
+        return false;
+#elif defined(OSGGLYPHS_AXES_SHAPE)
     if (!ellipsoidScreenBound(glyph.sphere.xyz, glyph.semiAxes, corners, nearestNdcZ))
         return false;
 #else
@@ -128,7 +132,7 @@ bool glyphBound(Glyph glyph, out vec2 corners[4], out float nearestNdcZ)
 #endif
     if (!coversASample(corners) || isOccluded(corners, nearestNdcZ))
         return false;
-#if defined(OSGGLYPHS_DEPTH_PEEL) && !defined(OSGGLYPHS_VECTOR_SHAPE) && !defined(OSGGLYPHS_SHAPE_ELLIPSOID)
+#if defined(OSGGLYPHS_DEPTH_PEEL) && !defined(OSGGLYPHS_VECTOR_SHAPE) && !defined(OSGGLYPHS_AXES_SHAPE)
     if (isPeeledAwaySphere(glyph.sphere, corners))
         return false;
 #endif

@@ -8,8 +8,9 @@
 //   radius / osgGlyphs_radiusScale and the scalar in [0, 1] over the data's range, as floats
 // osgGlyphs_color: RGBA8 per glyph (OSGGLYPHS_COLOR_RGBA only).
 // osgGlyphs_vector: direction and magnitude per glyph (vector shapes only).
-// osgGlyphs_axes, osgGlyphs_orientation: per ellipsoid, its semi-axes as fractions of its radius
-//   and the quaternion (x, y, z, w) that turns its body axes into the model's (ellipsoids only).
+// osgGlyphs_axes, osgGlyphs_orientation: per ellipsoid or superquadric, its semi-axes as fractions
+//   of its radius (xyz) and the quaternion (x, y, z, w) that turns its body axes into the model's;
+//   a superquadric's exponents e1, e2 as the high and low bytes of 16 bits (w), e = byte / 127.
 // osgGlyphs_ambientOcclusion: RGBA8 per glyph (OSGGLYPHS_AMBIENT_OCCLUSION only): rgb the model-space
 //   direction term of the light reaching the glyph, mapped from [-1, 1], a its mean.
 // osgGlyphs_position: the glyph's position, for instanced techniques (else gl_Vertex); with
@@ -88,7 +89,7 @@ vec4 glyphPosition()
     return vec4(position, 1.0);
 }
 
-#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+#ifdef OSGGLYPHS_AXES_SHAPE
 /** The rotation of a unit quaternion (x, y, z, w). */
 mat3 rotationOf(vec4 q)
 {
@@ -97,6 +98,16 @@ mat3 rotationOf(vec4 q)
     float xy = q.x * twice.y, xz = q.x * twice.z, yz = q.y * twice.z;
     float wx = q.w * twice.x, wy = q.w * twice.y, wz = q.w * twice.z;
     return mat3(1.0 - yy - zz, xy + wz, xz - wy, xy - wz, 1.0 - xx - zz, yz + wx, xz + wy, yz - wx, 1.0 - xx - yy);
+}
+#endif
+
+#ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
+/** The exponents (e1, e2) of a superquadric, packed as two bytes in 16 bits of its axes attribute. */
+vec2 unpackExponents(float packedWord)
+{
+    float word = floor(packedWord * 65535.0 + 0.5);
+    float high = floor(word / 256.0);
+    return vec2(high, word - 256.0 * high) / 127.0;
 }
 #endif
 
@@ -124,13 +135,16 @@ Glyph decodeGlyph()
     glyph.sphere.xyz = center - axis * (len * osgGlyphs_vectorParams.z);
     glyph.axis = vec4(axis, len);
 #endif
-#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+#ifdef OSGGLYPHS_AXES_SHAPE
     float rotationLength = length(osgGlyphs_orientation);
     if (!(rotationLength > 0.0))
         glyph.sphere.w = 0.0; // no rotation: not drawn
     vec3 semiAxes = osgGlyphs_axes.xyz * glyphRadius();
     glyph.semiAxes = mat3(gl_ModelViewMatrix) * rotationOf(osgGlyphs_orientation / rotationLength) *
                      mat3(semiAxes.x, 0.0, 0.0, 0.0, semiAxes.y, 0.0, 0.0, 0.0, semiAxes.z);
+#endif
+#ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
+    glyph.exponents = unpackExponents(osgGlyphs_axes.w);
 #endif
     return glyph;
 }

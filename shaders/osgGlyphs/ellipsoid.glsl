@@ -2,7 +2,7 @@
 // ellipsoid is its centre and the matrix A whose columns are its semi-axes, in eye space: the
 // points centre + A u with |u| <= 1.
 
-#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+#ifdef OSGGLYPHS_AXES_SHAPE
 
 /** The matrix that takes the ellipsoid to the unit sphere, A^-1: its semi-axes are orthogonal, so
  * its rows are the semi-axes over their squared lengths. */

@@ -10,6 +10,7 @@ layout(triangle_strip, max_vertices = 4) out;
 #include "sphere.glsl"
 #include "vector.glsl"
 #include "ellipsoid.glsl"
+#include "superquadric.glsl"
 
 #include "bound.glsl"
 
@@ -21,8 +22,11 @@ in GlyphVertex
     vec4 axis;
     vec4 color;
     vec4 occlusion;
-#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+#ifdef OSGGLYPHS_AXES_SHAPE
     mat3 semiAxes;
+#endif
+#ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
+    vec2 exponents;
 #endif
 }
 glyphIn[];
@@ -37,8 +41,11 @@ void main()
     glyph.axis = glyphIn[0].axis;
     glyph.color = glyphIn[0].color;
     glyph.occlusion = glyphIn[0].occlusion;
-#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+#ifdef OSGGLYPHS_AXES_SHAPE
     glyph.semiAxes = glyphIn[0].semiAxes;
+#endif
+#ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
+    glyph.exponents = glyphIn[0].exponents;
 #endif
     if (!isDrawn(glyph))
         return;

@@ -10,8 +10,11 @@ out GlyphVertex
     vec4 axis;
     vec4 color;
     vec4 occlusion;
-#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+#ifdef OSGGLYPHS_AXES_SHAPE
     mat3 semiAxes;
+#endif
+#ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
+    vec2 exponents;
 #endif
 }
 glyphOut;
@@ -23,8 +26,11 @@ void main()
     glyphOut.axis = glyph.axis;
     glyphOut.color = glyph.color;
     glyphOut.occlusion = glyph.occlusion;
-#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+#ifdef OSGGLYPHS_AXES_SHAPE
     glyphOut.semiAxes = glyph.semiAxes;
+#endif
+#ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
+    glyphOut.exponents = glyph.exponents;
 #endif
     gl_Position = vec4(glyph.sphere.xyz, 1.0);
 }

@@ -15,14 +15,17 @@ uniform vec4 osgGlyphs_viewport;
 struct Glyph
 {
     vec4 sphere; // centre (vector shapes: the tail's base centre), radius (ellipsoids: the largest
-                 // semi-axis; 0: not drawn)
+                 // semi-axis, superquadrics: a bound of their extent; 0: not drawn)
     vec4 axis;   // vector shapes: unit axis, length
     vec4 color;
     // Per-glyph ambient occlusion (GlyphCloud::setOcclusion): the light reaching a surface point of
     // unit eye-space normal n is clamp(occlusion.w + dot(occlusion.xyz, n), 0, 1); (0, 0, 0, 1) without.
     vec4 occlusion;
-#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
-    mat3 semiAxes; // ellipsoids: the semi-axes as columns
+#ifdef OSGGLYPHS_AXES_SHAPE
+    mat3 semiAxes; // ellipsoids and superquadrics: the semi-axes as columns
+#endif
+#ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
+    vec2 exponents; // superquadrics: e1 along the third semi-axis, e2 around it
 #endif
 };
 

@@ -13,6 +13,7 @@
 #include "sphere.glsl"
 #include "vector.glsl"
 #include "ellipsoid.glsl"
+#include "superquadric.glsl"
 #include "lighting.glsl"
 #include "varyings.glsl"
 #include "clip.glsl"
@@ -126,7 +127,11 @@ bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
                              Span(second.tEnter + start, second.tLeave + start, toEye * second.nEnter,
                                   toEye * second.nLeave),
                              t, normal);
-#elif defined(OSGGLYPHS_SHAPE_ELLIPSOID)
+#elif defined(OSGGLYPHS_SHAPE_SUPERQUADRIC)
+    Span span;
+    if (superquadricSpan(origin, direction, fragSphere.xyz, fragInverseSemiAxes, fragExponents, span))
+        keepNearerDrawnPoint(origin, direction, span, t, normal);
+#elif defined(OSGGLYPHS_AXES_SHAPE)
     Span span;
     if (ellipsoidSpan(origin, direction, fragSphere.xyz, fragInverseSemiAxes, span))
         keepNearerDrawnPoint(origin, direction, span, t, normal);

@@ -7,6 +7,7 @@
 #include "sphere.glsl"
 #include "vector.glsl"
 #include "ellipsoid.glsl"
+#include "superquadric.glsl"
 #include "bound.glsl"
 
 #define OSGGLYPHS_VARYINGS_OUT 1

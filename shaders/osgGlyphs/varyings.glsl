@@ -15,8 +15,11 @@ flat OSGGLYPHS_VARYING vec4 fragAxis; // unit axis, length
 #ifdef OSGGLYPHS_AMBIENT_OCCLUSION
 flat OSGGLYPHS_VARYING vec4 fragOcclusion; // Glyph.occlusion
 #endif
-#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+#ifdef OSGGLYPHS_AXES_SHAPE
 flat OSGGLYPHS_VARYING mat3 fragInverseSemiAxes; // takes the ellipsoid to the unit sphere
+#endif
+#ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
+flat OSGGLYPHS_VARYING vec2 fragExponents;
 #endif
 
 #ifdef OSGGLYPHS_VARYINGS_OUT
@@ -30,8 +33,11 @@ void writeVaryings(Glyph glyph)
 #ifdef OSGGLYPHS_AMBIENT_OCCLUSION
     fragOcclusion = glyph.occlusion;
 #endif
-#ifdef OSGGLYPHS_SHAPE_ELLIPSOID
+#ifdef OSGGLYPHS_AXES_SHAPE
     fragInverseSemiAxes = inverseSemiAxes(glyph.semiAxes);
+#endif
+#ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
+    fragExponents = glyph.exponents;
 #endif
 }
 #endif

@@ -31,6 +31,13 @@ const double HEAD_LENGTH = 0.3, HEAD_RADIUS = 2.0; // GlyphCloud's arrow default
 /** Depth to a few 24-bit steps; grazing hits (|cos| < 0.15) are not compared. */
 const double DEPTH_TOLERANCE = 5e-7;
 
+/** A superquadric's semi-axes are 16-bit fractions of a radius up to sqrt(3) times the largest (the
+ * bound of the rounded box here is 1.46 times): their rounding moves its surface by up to 1e-6. */
+double depthToleranceOf(GlyphShape shape)
+{
+    return shape == GlyphShape::Superquadric ? 2.0 * DEPTH_TOLERANCE : DEPTH_TOLERANCE;
+}
+
 struct Glyph
 {
     osg::Vec3 position;
@@ -52,6 +59,9 @@ osg::Vec3 semiAxesOf(const Glyph& glyph)
     return osg::Vec3(0.5f * glyph.vector.length(), glyph.radius, 0.7f * glyph.radius);
 }
 
+/** A superquadric glyph's exponents, with the ellipsoid's semi-axes and turn: a rounded box. */
+const osg::Vec2 EXPONENTS(0.3f, 0.6f);
+
 osg::Quat turnOf(const Glyph& glyph)
 {
     osg::Quat turn;
@@ -66,6 +76,7 @@ osg::ref_ptr<GlyphCloud> createCloud(GlyphShape shape, const std::vector<Glyph>&
     osg::ref_ptr<osg::Vec4ubArray> colors = new osg::Vec4ubArray;
     osg::ref_ptr<osg::Vec3Array> semiAxes = new osg::Vec3Array;
     osg::ref_ptr<osg::Vec4Array> turns = new osg::Vec4Array;
+    osg::ref_ptr<osg::Vec2Array> exponents = new osg::Vec2Array;
     for (const Glyph& glyph : glyphs)
     {
         positions->push_back(glyph.position);
@@ -74,13 +85,15 @@ osg::ref_ptr<GlyphCloud> createCloud(GlyphShape shape, const std::vector<Glyph>&
         colors->push_back(glyph.color);
         semiAxes->push_back(semiAxesOf(glyph));
         turns->push_back(turnOf(glyph).asVec4());
+        exponents->push_back(EXPONENTS);
     }
     osg::ref_ptr<GlyphCloud> cloud = new GlyphCloud;
     cloud->setShape(shape);
     cloud->setSemiAxes(semiAxes.get());
     cloud->setOrientations(turns.get());
+    cloud->setExponents(exponents.get());
     // Float radii: an ellipsoid's radius is its largest semi-axis, which a half float would round.
-    cloud->setCompressedAttributes(shape != GlyphShape::Ellipsoid);
+    cloud->setCompressedAttributes(!osgGlyphs::isAxesShape(shape));
     cloud->setPositions(positions.get());
     cloud->setVectors(vectors.get());
     cloud->setRadii(radii.get());
@@ -101,6 +114,11 @@ void addGlyphs(AnalyticScene& scene, GlyphShape shape, const std::vector<Glyph>&
             scene.addSphere(glyph.position, glyph.radius);
         else if (shape == GlyphShape::Ellipsoid)
             scene.addEllipsoid(glyph.position, semiAxesOf(glyph), turnOf(glyph));
+        else if (shape == GlyphShape::Superquadric)
+            // The exponents as the GPU holds them, in steps of 1/127.
+            scene.addSuperquadric(glyph.position, semiAxesOf(glyph), turnOf(glyph),
+                                  std::round(EXPONENTS.x() * 127.0) / 127.0,
+                                  std::round(EXPONENTS.y() * 127.0) / 127.0);
         else if (shape == GlyphShape::Cone)
             scene.addCone(tail, axis, length, glyph.radius);
         else if (shape == GlyphShape::Cylinder)
@@ -159,7 +177,7 @@ protected:
         osg::ref_ptr<osg::Geode> glyphs = group({createCloud(clipCase.shape, GLYPHS).get()});
         const Frame frame = renderer.render(clipped(glyphs.get(), planes, clipCase.capped).get());
         saveFrame(frame, "clip_" + name + "_" + caseName());
-        return compareWithTruth(frame, truth, PALETTE, DEPTH_TOLERANCE, 0.15);
+        return compareWithTruth(frame, truth, PALETTE, depthToleranceOf(clipCase.shape), 0.15);
     }
 
     Renderer renderer{240, 160};
@@ -197,7 +215,8 @@ INSTANTIATE_TEST_SUITE_P(
                       ClipCase{GlyphShape::Cone, false}, ClipCase{GlyphShape::Cone, true},
                       ClipCase{GlyphShape::Arrow, false}, ClipCase{GlyphShape::Arrow, true},
                       ClipCase{GlyphShape::Cylinder, false}, ClipCase{GlyphShape::Cylinder, true},
-                      ClipCase{GlyphShape::Ellipsoid, false}, ClipCase{GlyphShape::Ellipsoid, true}),
+                      ClipCase{GlyphShape::Ellipsoid, false}, ClipCase{GlyphShape::Ellipsoid, true},
+                      ClipCase{GlyphShape::Superquadric, false}, ClipCase{GlyphShape::Superquadric, true}),
     [](const ::testing::TestParamInfo<ClipCase>& param)
     { return shapeName(param.param.shape) + (param.param.capped ? "_capped" : "_open"); });
 

@@ -77,49 +77,6 @@ osg::Quat turn(double angle, const osg::Vec3d& axis)
     return osg::Quat(angle, axis);
 }
 
-/** The pixel centres covered, against the truth's, and the depth error of those both cover. */
-struct Comparison
-{
-    int truthCentres = 0;
-    int intersection = 0;
-    int unionCentres = 0;
-    std::vector<double> depthErrors; // |t - t_truth| / largest semi-axis
-
-    double iou() const { return unionCentres ? double(intersection) / unionCentres : 0.0; }
-    double depthPercentile(double fraction)
-    {
-        if (depthErrors.empty())
-            return 0.0;
-        std::sort(depthErrors.begin(), depthErrors.end());
-        return depthErrors[std::min(depthErrors.size() - 1, std::size_t(fraction * depthErrors.size()))];
-    }
-};
-
-Comparison compareCentres(const Frame& frame, const AnalyticScene& truth, double largestSemiAxis)
-{
-    Comparison result;
-    const osg::Matrixd toWindow = frame.view * frame.projection * osg::Matrixd::translate(1.0, 1.0, 1.0) *
-                                  osg::Matrixd::scale(0.5 * frame.width(), 0.5 * frame.height(), 0.5);
-    const osg::Matrixd fromWindow = osg::Matrixd::inverse(toWindow);
-    for (int y = 0; y < frame.height(); ++y)
-        for (int x = 0; x < frame.width(); ++x)
-        {
-            const RayHit hit = truth.castPixel(frame, x, y);
-            const bool covered = frame.isCovered(x, y);
-            result.truthCentres += hit.hit() ? 1 : 0;
-            result.unionCentres += hit.hit() || covered ? 1 : 0;
-            if (!hit.hit() || !covered)
-                continue;
-            ++result.intersection;
-            const osg::Vec3d drawn = osg::Vec3d(x + 0.5, y + 0.5, frame.depthAt(x, y)) * fromWindow;
-            osg::Vec3d origin, direction;
-            frame.pixelRay(x + 0.5, y + 0.5, origin, direction);
-            result.depthErrors.push_back(std::fabs((drawn - origin) * direction - hit.distance) /
-                                         largestSemiAxis);
-        }
-    return result;
-}
-
 const osg::Vec4ub RED(255, 0, 0, 255), GREEN(0, 255, 0, 255), BLUE(0, 0, 255, 255), YELLOW(255, 255, 0, 255),
     CYAN(0, 255, 255, 255), MAGENTA(255, 0, 255, 255);
 
@@ -158,7 +115,7 @@ protected:
         for (const EllipsoidSpec& glyph : glyphs)
             largest = std::max<double>(
                 largest, std::max(glyph.semiAxes.x(), std::max(glyph.semiAxes.y(), glyph.semiAxes.z())));
-        Comparison comparison = compareCentres(frame, truth, largest);
+        CoverageComparison comparison = compareCoveredCentres(frame, truth, largest);
         EXPECT_GT(comparison.truthCentres, minCentres);
         EXPECT_GE(comparison.iou(), 0.998) << comparison.intersection << " of " << comparison.unionCentres;
         EXPECT_LE(comparison.depthPercentile(0.99), 1e-4);

@@ -159,6 +159,38 @@ std::string NotifyCapture::stop()
     return _text.str();
 }
 
+double CoverageComparison::depthPercentile(double fraction)
+{
+    if (depthErrors.empty())
+        return 0.0;
+    std::sort(depthErrors.begin(), depthErrors.end());
+    return depthErrors[std::min(depthErrors.size() - 1, std::size_t(fraction * depthErrors.size()))];
+}
+
+CoverageComparison compareCoveredCentres(const Frame& frame, const AnalyticScene& truth, double size)
+{
+    CoverageComparison result;
+    const osg::Matrixd toWindow = frame.view * frame.projection * osg::Matrixd::translate(1.0, 1.0, 1.0) *
+                                  osg::Matrixd::scale(0.5 * frame.width(), 0.5 * frame.height(), 0.5);
+    const osg::Matrixd fromWindow = osg::Matrixd::inverse(toWindow);
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x)
+        {
+            const RayHit hit = truth.castPixel(frame, x, y);
+            const bool covered = frame.isCovered(x, y);
+            result.truthCentres += hit.hit() ? 1 : 0;
+            result.unionCentres += hit.hit() || covered ? 1 : 0;
+            if (!hit.hit() || !covered)
+                continue;
+            ++result.intersection;
+            const osg::Vec3d drawn = osg::Vec3d(x + 0.5, y + 0.5, frame.depthAt(x, y)) * fromWindow;
+            osg::Vec3d origin, direction;
+            frame.pixelRay(x + 0.5, y + 0.5, origin, direction);
+            result.depthErrors.push_back(std::fabs((drawn - origin) * direction - hit.distance) / size);
+        }
+    return result;
+}
+
 osg::ref_ptr<osg::LightSource> createColouredLight()
 {
     osg::ref_ptr<osg::LightSource> source = new osg::LightSource;

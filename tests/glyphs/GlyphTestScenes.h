@@ -85,6 +85,22 @@ CentreAgreement compareEveryPixelCentre(const Frame& frame, const AnalyticScene&
 /** Light 0, directional from the upper left front (towards (-0.45, -0.65, 0.6)), with coloured
  * ambient, diffuse and specular parts: for a Renderer whose view has NO_LIGHT, so that every part
  * of a normal changes the shade. */
+/** The pixel centres covered, against the truth's, and the depth error of those both cover. */
+struct CoverageComparison
+{
+    int truthCentres = 0;
+    int intersection = 0;
+    int unionCentres = 0;
+    std::vector<double> depthErrors; // |t - t_truth| / the glyphs' size
+
+    double iou() const { return unionCentres ? double(intersection) / unionCentres : 0.0; }
+    /** The error below which a fraction of the depth errors lie (sorts them). */
+    double depthPercentile(double fraction);
+};
+
+/** Every pixel centre of frame against truth's ray through it; depth errors over size. */
+CoverageComparison compareCoveredCentres(const Frame& frame, const AnalyticScene& truth, double size);
+
 osg::ref_ptr<osg::LightSource> createColouredLight();
 
 /** A directional osg::Light (position w = 0, in world coordinates, under no transform) as the glyph

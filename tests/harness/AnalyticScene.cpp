@@ -67,6 +67,22 @@ struct Ellipsoid
     glm::dmat3 form;
 };
 
+/** Barr's superellipsoid: in the body frame scaled by the semi-axes,
+ * (|x|^(2/e2) + |y|^(2/e2))^(e2/e1) + |z|^(2/e1) <= 1. toBody maps x - centre there. */
+struct Superquadric
+{
+    dvec3 centre;
+    glm::dmat3 toBody;
+    double e1, e2, reach; // reach: a radius about centre that holds it
+
+    double inside(dvec3 p) const
+    {
+        const dvec3 u = glm::abs(toBody * (p - centre));
+        return std::pow(std::pow(u.x, 2.0 / e2) + std::pow(u.y, 2.0 / e2), e2 / e1) +
+               std::pow(u.z, 2.0 / e1) - 1.0;
+    }
+};
+
 /** A solid of revolution about the unit axis from base: radius r0 at z0 to r1 at z1. */
 struct Segment
 {
@@ -228,6 +244,60 @@ bool hitSolid(const Ellipsoid& solid, dvec3 origin, dvec3 direction, double tMin
     return true;
 }
 
+/** Sphere tracing within the superquadric's box: N = (Barr's function + 1)^(e1/2) is a norm no
+ * larger than the L1 norm, so a point where N > 1 lies at least (N - 1) / sqrt(3) from the surface in
+ * the unit frame, and each step goes that far; the normal (outward) by central differences of
+ * Barr's function. A ray that starts inside meets the surface where it leaves, as for the quadric. Not the
+ * shaders' way (Newton's steps from a bracketed minimum), so that the two can disagree. */
+bool hitSolid(const Superquadric& solid, dvec3 origin, dvec3 direction, double tMin, Hit& nearest)
+{
+    const dvec3 o = solid.toBody * (origin - solid.centre), d = solid.toBody * direction;
+    double lo = tMin, hi = INFINITE_DISTANCE;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        if (std::abs(d[axis]) < 1e-300)
+        {
+            if (std::abs(o[axis]) > 1.0)
+                return false;
+            continue;
+        }
+        const double tA = (-1.0 - o[axis]) / d[axis], tB = (1.0 - o[axis]) / d[axis];
+        lo = std::max(lo, std::min(tA, tB));
+        hi = std::min(hi, std::max(tA, tB));
+    }
+    if (lo >= hi || lo >= nearest.t)
+        return false;
+    const double speed = glm::length(d), sqrt3 = std::sqrt(3.0);
+    // From outside, forward from the box's entry; from inside (the ray starts in the solid), the
+    // way out: backward from the box's exit.
+    const bool fromInside = lo == tMin && solid.inside(origin + direction * lo) < 0.0;
+    const double way = fromInside ? -1.0 : 1.0;
+    double t = fromInside ? hi : lo;
+    for (int i = 0; i < 100000 && t >= lo && t <= hi; ++i)
+    {
+        const double excess = std::pow(solid.inside(origin + direction * t) + 1.0, 0.5 * solid.e1) - 1.0;
+        if (excess <= 1e-11)
+        {
+            if (t >= nearest.t)
+                return false;
+            nearest.t = t;
+            const dvec3 p = origin + direction * t;
+            const double e = 1e-7 * solid.reach;
+            dvec3 gradient;
+            for (int axis = 0; axis < 3; ++axis)
+            {
+                dvec3 offset(0.0);
+                offset[axis] = e;
+                gradient[axis] = solid.inside(p + offset) - solid.inside(p - offset);
+            }
+            nearest.normal = normalize(gradient);
+            return true;
+        }
+        t += way * excess / (sqrt3 * speed);
+    }
+    return false;
+}
+
 /** The slabs of the box; the normal is that of the face the ray enters. */
 bool hitSolid(const Box& solid, dvec3 origin, dvec3 direction, double tMin, Hit& nearest)
 {
@@ -297,6 +367,11 @@ bool isInside(const Ellipsoid& solid, dvec3 p)
     return dot(p - solid.centre, solid.form * (p - solid.centre)) < 1.0;
 }
 
+bool isInside(const Superquadric& solid, dvec3 p)
+{
+    return solid.inside(p) < 0.0;
+}
+
 bool isInside(const Box& solid, dvec3 p)
 {
     return all(greaterThan(p, solid.min)) && all(lessThan(p, solid.max));
@@ -322,7 +397,7 @@ osg::Vec3d shadeLikeGlyphs(const osg::Vec3d& base, const osg::Vec3d& position, c
 
 struct AnalyticScene::Primitive
 {
-    std::variant<Sphere, Box, Plane, Segment, Ellipsoid> solid;
+    std::variant<Sphere, Box, Plane, Segment, Ellipsoid, Superquadric> solid;
     int label;
 };
 
@@ -357,6 +432,23 @@ int AnalyticScene::addEllipsoid(const osg::Vec3d& center, const osg::Vec3d& semi
         form += glm::outerProduct(axis, axis) / (semiAxes[k] * semiAxes[k]);
     }
     return add(Primitive{Ellipsoid{toGlm(center), form}, -1});
+}
+
+int AnalyticScene::addSuperquadric(const osg::Vec3d& center, const osg::Vec3d& semiAxes,
+                                   const osg::Quat& rotation, double e1, double e2)
+{
+    // toBody: the rows of R^T over the semi-axes.
+    glm::dmat3 toBody(0.0);
+    for (int k = 0; k < 3; ++k)
+    {
+        osg::Vec3d body;
+        body[k] = 1.0;
+        const dvec3 axis = toGlm(rotation * body) / semiAxes[k];
+        for (int column = 0; column < 3; ++column)
+            toBody[column][k] = axis[column];
+    }
+    const double reach = 1.7320508075688772 * std::max(semiAxes.x(), std::max(semiAxes.y(), semiAxes.z()));
+    return add(Primitive{Superquadric{toGlm(center), toBody, e1, e2, reach}, -1});
 }
 
 int AnalyticScene::addBox(const osg::Vec3d& min, const osg::Vec3d& max)

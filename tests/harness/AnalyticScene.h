@@ -54,6 +54,10 @@ public:
     /** The ellipsoid of semi-axes along its body x, y, z axes, turned by rotation (a body vector v
      * lies at rotation * v from center). */
     int addEllipsoid(const osg::Vec3d& center, const osg::Vec3d& semiAxes, const osg::Quat& rotation);
+    /** Barr's superellipsoid of exponents e1 (along the body z axis) and e2 (around it), with the
+     * semi-axes and turn of addEllipsoid(). */
+    int addSuperquadric(const osg::Vec3d& center, const osg::Vec3d& semiAxes, const osg::Quat& rotation,
+                        double e1, double e2);
     int addBox(const osg::Vec3d& min, const osg::Vec3d& max);
     /** A plane through point with the given normal; only rays hitting it within the
      * given distance of point count (a finite square quad when used for a plane drawable). */

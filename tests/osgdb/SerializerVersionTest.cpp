@@ -269,7 +269,7 @@ TEST_P(FilesBeforeTheDomain, DeclareNoDomain)
 /** The properties version 2 added (DomainVersion.h). */
 static bool isOfVersionTwo(const std::string& property)
 {
-    return property == "SemiAxes" || property == "Orientations";
+    return property == "SemiAxes" || property == "Orientations" || property == "Exponents";
 }
 
 // Each property of versions 0 and 1 appears in the old text files: the fixtures set every one of them.
@@ -485,12 +485,28 @@ TEST_P(FilesInTheDomain, EllipsoidsKeepTheirSemiAxesAndTurnsFromVersionTwo)
     EXPECT_EQ(readCloud->getOrientations()->asVector(), cloud->getOrientations()->asVector());
     EXPECT_EQ(readCloud->getNumGlyphs(), 5u);
 
+    // Superquadrics: their exponents too.
+    osg::ref_ptr<osg::Vec2Array> exponents = new osg::Vec2Array;
+    for (unsigned int i = 0; i < 5; ++i)
+        exponents->push_back(osg::Vec2(0.1f + 0.3f * i, 1.9f - 0.2f * i));
+    cloud->setShape(osgGlyphs::GlyphShape::Superquadric);
+    cloud->setExponents(exponents.get());
+    const osg::ref_ptr<osg::Node> superquadrics = writeAndRead(*scene, "superquadrics_v2", 2);
+    ASSERT_TRUE(superquadrics.valid()) << _path;
+    const auto* readSuperquadrics = dynamic_cast<const GlyphCloud*>(superquadrics->asGroup()->getChild(0));
+    ASSERT_NE(readSuperquadrics, nullptr);
+    EXPECT_EQ(readSuperquadrics->getShape(), osgGlyphs::GlyphShape::Superquadric);
+    ASSERT_NE(readSuperquadrics->getExponents(), nullptr);
+    EXPECT_EQ(readSuperquadrics->getExponents()->asVector(), exponents->asVector());
+    EXPECT_EQ(readSuperquadrics->getNumGlyphs(), 5u);
+    cloud->setShape(osgGlyphs::GlyphShape::Ellipsoid);
+
     osg::ref_ptr<osgGlyphsTest::NotifyCapture> capture = new osgGlyphsTest::NotifyCapture;
     const osg::ref_ptr<osg::Node> old = writeAndRead(*scene, "ellipsoids_v1", 1);
     const std::string warnings = capture->stop();
     ASSERT_TRUE(old.valid()) << _path;
     EXPECT_EQ(dynamic_cast<const GlyphCloud*>(old->asGroup()->getChild(0))->getSemiAxes(), nullptr);
-    EXPECT_NE(warnings.find("\"ellipsoids\" is written without its ellipsoids' semi-axes"), std::string::npos)
+    EXPECT_NE(warnings.find("\"ellipsoids\" is written without its glyphs' semi-axes"), std::string::npos)
         << warnings;
 }
 

@@ -118,6 +118,47 @@ TEST(TensorGlyphs, AreEllipsoidsAlongTheEigenvectorsOfSemiAxesTheEigenvalues)
     }
 }
 
+TEST(TensorGlyphs, KindlmannsSuperquadricsShowLinearPlanarAndIsotropicTensors)
+{
+    // Westin's metrics of the magnitudes (the sum 5): linear (3, 1, 1): c_l = 0.4, c_p = 0, a glyph
+    // symmetric about the major eigenvector; planar (2, 2, 1): c_l = 0, c_p = 0.4, symmetric about
+    // the minor one; isotropic: a sphere. Exponents (1 - c)^3: 0.216 along the axis of symmetry.
+    const osg::Quat turn(0.7, osg::Vec3d(1.0, 0.4, 0.2));
+    const std::vector<KnownTensor> tensors = {{osg::Vec3d(3.0, 1.0, 1.0), turn},
+                                              {osg::Vec3d(-2.0, 2.0, 1.0), turn},
+                                              {osg::Vec3d(2.0, 2.0, 2.0), turn}};
+    const osg::Vec3d symmetryAxes[2] = {turn * osg::Vec3d(1.0, 0.0, 0.0), turn * osg::Vec3d(0.0, 0.0, 1.0)};
+    const osg::Vec2 exponents[3] = {osg::Vec2(0.216f, 1.0f), osg::Vec2(0.216f, 1.0f), osg::Vec2(1.0f, 1.0f)};
+    const osg::Vec3 semiAxes[3] = {osg::Vec3(0.5f, 0.5f, 1.5f), osg::Vec3(1.0f, 1.0f, 0.5f),
+                                   osg::Vec3(1.0f, 1.0f, 1.0f)};
+    GlyphMappingOptions options = tensorOptions();
+    std::string error;
+    ASSERT_TRUE(setGlyphMappingOption(options, "glyph", "superquadric", error)) << error;
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = mapTensors(csvOf(tensors), options, error);
+    ASSERT_TRUE(cloud.valid()) << error;
+    EXPECT_EQ(cloud->getShape(), osgGlyphs::GlyphShape::Superquadric);
+    ASSERT_TRUE(cloud->getExponents());
+    for (std::size_t i = 0; i < tensors.size(); ++i)
+    {
+        const osg::Vec2 e = (*cloud->getExponents())[i];
+        EXPECT_NEAR(e.x(), exponents[i].x(), 1e-5f) << i;
+        EXPECT_NEAR(e.y(), exponents[i].y(), 1e-5f) << i;
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR((*cloud->getSemiAxes())[i][k], semiAxes[i][k], 1e-5f) << i << " axis " << k;
+        if (i == 2)
+            continue;
+        const osg::Vec4 q = (*cloud->getOrientations())[i];
+        const osg::Vec3d bodyZ = osg::Quat(q.x(), q.y(), q.z(), q.w()) * osg::Vec3d(0.0, 0.0, 1.0);
+        EXPECT_NEAR(std::abs(bodyZ * symmetryAxes[i]), 1.0, 1e-6) << i;
+    }
+
+    // Without tensors, superquadrics have no exponents to draw.
+    GlyphMappingOptions plain;
+    ASSERT_TRUE(setGlyphMappingOption(plain, "glyph", "superquadric", error)) << error;
+    EXPECT_FALSE(mapTensors(csvOf(tensors), plain, error));
+    EXPECT_NE(error.find("glyph superquadric draws tensors"), std::string::npos) << error;
+}
+
 TEST(TensorGlyphs, NineColumnsGiveTheSymmetricPart)
 {
     // xy = 2 and yx = 0 average to 1: the tensor [[1,1,0],[1,1,0],[0,0,3]] has eigenvalues 3, 2, 0.
@@ -212,5 +253,6 @@ TEST(TensorGlyphs, AZeroTensorIsASmallSphereAndBadOptionsAreOneError)
     options.optionPrefix = "--";
     ASSERT_TRUE(setGlyphMappingOption(options, "glyph", "cone", error)) << error;
     EXPECT_FALSE(mapTensors(csvOf(KNOWN), options, error).valid());
-    EXPECT_NE(error.find("--tensor draws ellipsoids, not --glyph cone"), std::string::npos) << error;
+    EXPECT_NE(error.find("--tensor draws ellipsoids or superquadrics, not --glyph cone"), std::string::npos)
+        << error;
 }

@@ -38,6 +38,7 @@ enum SkipReason
     ZERO_VECTOR,
     BAD_SEMI_AXES,
     BAD_ORIENTATION,
+    BAD_EXPONENTS,
     NUM_SKIP_REASONS
 };
 
@@ -48,7 +49,8 @@ const char* const SKIP_DESCRIPTIONS[NUM_SKIP_REASONS] = {
     "a vector that is not finite",
     "a zero vector, which gives it no direction",
     "semi-axes that are not all finite and > 0",
-    "an orientation quaternion that is zero or not finite"};
+    "an orientation quaternion that is zero or not finite",
+    "superquadric exponents that are not both finite and > 0"};
 
 bool isFinite(const osg::Vec3& v)
 {
@@ -93,7 +95,7 @@ public:
 
 float getGlyphRadius(const GlyphCloud& cloud, unsigned int i)
 {
-    if (cloud.getShape() == GlyphShape::Ellipsoid)
+    if (isAxesShape(cloud.getShape()))
     {
         const osg::Vec3& semiAxes = (*cloud.getSemiAxes())[i];
         return std::max(semiAxes.x(), std::max(semiAxes.y(), semiAxes.z()));
@@ -108,7 +110,13 @@ SkipReason getEllipsoidSkipReason(const GlyphCloud& cloud, unsigned int i)
     if (!isFinite(semiAxes) || !(semiAxes.x() > 0.0f && semiAxes.y() > 0.0f && semiAxes.z() > 0.0f))
         return BAD_SEMI_AXES;
     const float turn = cloud.getOrientations() ? (*cloud.getOrientations())[i].length() : 1.0f;
-    return std::isfinite(turn) && turn > 0.0f ? DRAWN : BAD_ORIENTATION;
+    if (!(std::isfinite(turn) && turn > 0.0f))
+        return BAD_ORIENTATION;
+    if (cloud.getShape() != GlyphShape::Superquadric || !cloud.getExponents())
+        return DRAWN;
+    const osg::Vec2& e = (*cloud.getExponents())[i];
+    return std::isfinite(e.x()) && std::isfinite(e.y()) && e.x() > 0.0f && e.y() > 0.0f ? DRAWN
+                                                                                        : BAD_EXPONENTS;
 }
 
 /** Whether and why the cloud skips glyph i, by GlyphCloud's rules. */
@@ -116,7 +124,7 @@ SkipReason getSkipReason(const GlyphCloud& cloud, unsigned int i)
 {
     if (!isFinite((*cloud.getPositions())[i]))
         return NON_FINITE_POSITION;
-    const bool ellipsoid = cloud.getShape() == GlyphShape::Ellipsoid;
+    const bool ellipsoid = isAxesShape(cloud.getShape());
     const float radius = ellipsoid ? 1.0f : getGlyphRadius(cloud, i);
     if (!(std::isfinite(radius) && radius > 0.0f))
         return BAD_RADIUS;

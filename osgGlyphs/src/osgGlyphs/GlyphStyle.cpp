@@ -8,11 +8,10 @@ using namespace osgGlyphs;
 namespace
 {
 
-const std::pair<GlyphShape, const char*> SHAPE_NAMES[] = {{GlyphShape::Sphere, "sphere"},
-                                                          {GlyphShape::Cone, "cone"},
-                                                          {GlyphShape::Arrow, "arrow"},
-                                                          {GlyphShape::Cylinder, "cylinder"},
-                                                          {GlyphShape::Ellipsoid, "ellipsoid"}};
+const std::pair<GlyphShape, const char*> SHAPE_NAMES[] = {
+    {GlyphShape::Sphere, "sphere"},       {GlyphShape::Cone, "cone"},
+    {GlyphShape::Arrow, "arrow"},         {GlyphShape::Cylinder, "cylinder"},
+    {GlyphShape::Ellipsoid, "ellipsoid"}, {GlyphShape::Superquadric, "superquadric"}};
 
 const std::pair<GlyphAnchor, const char*> ANCHOR_NAMES[] = {
     {GlyphAnchor::Tail, "tail"}, {GlyphAnchor::Center, "center"}, {GlyphAnchor::Head, "head"}};

@@ -175,14 +175,21 @@ bool GlyphMapper::resolveEllipsoids(const PointData& data, std::string& error)
                 error = missingColumn(option("tensor"), column, data);
                 return false;
             }
-        if (_options.shapeGiven && _options.shape != GlyphShape::Ellipsoid)
+        if (_options.shapeGiven && !isAxesShape(_options.shape))
         {
-            error = option("tensor") + " draws ellipsoids, not " + option("glyph") + " " +
+            error = option("tensor") + " draws ellipsoids or superquadrics, not " + option("glyph") + " " +
                     getShapeName(_options.shape);
             return false;
         }
-        _options.shape = GlyphShape::Ellipsoid;
+        if (!_options.shapeGiven)
+            _options.shape = GlyphShape::Ellipsoid;
         return true;
+    }
+    if (_options.shape == GlyphShape::Superquadric)
+    {
+        error = option("glyph") + " superquadric draws tensors (" + option("tensor") +
+                ", Kindlmann's glyphs); the data's shapes are drawn as ellipsoids";
+        return false;
     }
     const int shape = findColumnTriple(data, SHAPE_CANDIDATES);
     if (shape >= 0 && !_options.shapeGiven)
@@ -651,6 +658,7 @@ osg::ref_ptr<GlyphCloud> GlyphMapper::createCloud(const PointData& data, std::st
     }
     cloud->setSemiAxes(arrays.semiAxes.get());
     cloud->setOrientations(arrays.orientations.get());
+    cloud->setExponents(arrays.exponents.get());
     if (arrays.scalars.valid())
     {
         cloud->setScalarRange(_key.min, _key.max); // before the scalars: they are packed once, for it
@@ -698,6 +706,7 @@ bool GlyphMapper::updateCloud(GlyphCloud& cloud, const PointData& data, std::str
                            arrays.colors.valid() == (cloud.getColors() != nullptr) &&
                            arrays.semiAxes.valid() == (cloud.getSemiAxes() != nullptr) &&
                            arrays.orientations.valid() == (cloud.getOrientations() != nullptr) &&
+                           arrays.exponents.valid() == (cloud.getExponents() != nullptr) &&
                            cloud.getPositions();
     if (!sameKinds)
     {
@@ -718,6 +727,7 @@ bool GlyphMapper::updateCloud(GlyphCloud& cloud, const PointData& data, std::str
     changed = replaceContents(cloud.getColors(), arrays.colors.get()) || changed;
     changed = replaceContents(cloud.getSemiAxes(), arrays.semiAxes.get()) || changed;
     changed = replaceContents(cloud.getOrientations(), arrays.orientations.get()) || changed;
+    changed = replaceContents(cloud.getExponents(), arrays.exponents.get()) || changed;
     if (changed)
         cloud.dirtyGlyphs();
     return true;
@@ -739,6 +749,8 @@ bool GlyphMapper::computeEllipsoids(const PointData& data, FrameArrays& arrays, 
         const std::size_t n = data.getNumPoints();
         arrays.semiAxes = new osg::Vec3Array(n);
         arrays.orientations = new osg::Vec4Array(n);
+        if (_options.shape == GlyphShape::Superquadric)
+            arrays.exponents = new osg::Vec2Array(n);
         const float floor = TENSOR_FLOOR * _radius;
         for (std::size_t i = 0; i < n; ++i)
         {
@@ -750,6 +762,15 @@ bool GlyphMapper::computeEllipsoids(const PointData& data, FrameArrays& arrays, 
                 continue;
             }
             const detail::TensorEigen eigen = detail::decompose(tensor);
+            if (arrays.exponents.valid())
+            {
+                const detail::TensorSuperquadric glyph = detail::kindlmannGlyph(eigen);
+                for (int k = 0; k < 3; ++k)
+                    (*arrays.semiAxes)[i][k] = std::max(float(glyph.semiAxes[k] * _tensorScale), floor);
+                (*arrays.orientations)[i] = glyph.rotation.asVec4();
+                (*arrays.exponents)[i] = osg::Vec2(glyph.exponents);
+                continue;
+            }
             for (int k = 0; k < 3; ++k)
                 (*arrays.semiAxes)[i][k] = std::max(float(std::abs(eigen.values[k]) * _tensorScale), floor);
             (*arrays.orientations)[i] = eigen.rotation.asVec4();
@@ -902,7 +923,9 @@ std::string GlyphMapper::describe() const
     if (osgGlyphs::isVectorShape(_options.shape))
         text += ", vectors " + joinColumns(_vectorColumns) + " x " + formatNumber(_lengthScale);
     if (!_options.tensorColumns.empty())
-        text += ", tensors " + joinColumns(_options.tensorColumns) + " as ellipsoids, " +
+        text += ", tensors " + joinColumns(_options.tensorColumns) +
+                (_options.shape == GlyphShape::Superquadric ? " as Kindlmann's superquadrics, "
+                                                            : " as ellipsoids, ") +
                 formatNumber(_tensorScale) + " per unit of eigenvalue";
     if (!_semiAxisColumns.empty())
         text += ", ellipsoids of semi-axes " + joinColumns(_semiAxisColumns) +

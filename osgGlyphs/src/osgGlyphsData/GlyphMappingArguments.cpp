@@ -66,13 +66,14 @@ void osgGlyphsData::describeGlyphMappingArguments(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--length-scale <s>", "Vector glyph length per unit of vector length "
                                                      "(default: the mean vector is 4 radii long).");
     usage.addCommandLineOption("--glyph <shape>",
-                               "sphere (default), cone, arrow, cylinder or ellipsoid (the default "
-                               "where the data has ellipsoids' shape columns); cones, arrows "
-                               "and cylinders point along the vectors.");
+                               "sphere (default), cone, arrow, cylinder, ellipsoid (the default "
+                               "where the data has ellipsoids' shape columns) or superquadric (with "
+                               "--tensor); cones, arrows and cylinders point along the vectors.");
     usage.addCommandLineOption("--tensor <xx,yy,zz,xy,xz,yz>",
                                "A symmetric tensor per point (6 columns in LAMMPS's stress/atom order, or 9 "
                                "row by row) drawn as an ellipsoid along its eigenvectors, semi-axes "
-                               "|eigenvalue| x --tensor-scale; --color-by trace (default), anisotropy or "
+                               "|eigenvalue| x --tensor-scale, or with --glyph superquadric as Kindlmann's "
+                               "superquadric glyph; --color-by trace (default), anisotropy or "
                                "eigenvalue1..3 (largest first, signed).");
     usage.addCommandLineOption("--tensor-scale <s>", "Semi-axis length per unit of eigenvalue (default: the "
                                                      "median largest |eigenvalue| is the default radius).");

@@ -17,7 +17,8 @@ enum class Stream : unsigned int
     Positions = 1,
     Scalars = 2,
     Vectors = 3,
-    Ellipsoids = 4
+    Ellipsoids = 4,
+    Exponents = 5
 };
 
 /** Uniform floats in [0, 1) from a std::mt19937 seeded by (seed, stream), converted without
@@ -105,6 +106,21 @@ void setEllipsoids(GlyphCloud& cloud, PointRange range, unsigned int seed, float
     cloud.setOrientations(rotations.get());
 }
 
+/** Superquadrics' exponents, each uniform in [0.1, 1]: from rounded boxes to ellipsoids. */
+void setExponents(GlyphCloud& cloud, PointRange range, unsigned int seed)
+{
+    const uint64_t count = range.end - range.begin;
+    UniformFloats uniform(seed, Stream::Exponents, 2 * range.begin);
+    osg::ref_ptr<osg::Vec2Array> exponents = new osg::Vec2Array;
+    exponents->reserve(count);
+    for (uint64_t i = 0; i < count; ++i)
+    {
+        const float e1 = 0.1f + 0.9f * uniform();
+        exponents->push_back(osg::Vec2(e1, 0.1f + 0.9f * uniform()));
+    }
+    cloud.setExponents(exponents.get());
+}
+
 }
 
 float osgGlyphsData::getDefaultRandomRadius(unsigned int count)
@@ -127,8 +143,10 @@ osg::ref_ptr<GlyphCloud> osgGlyphsData::createRandomCloud(const RandomCloudOptio
         cloud->setVectors(createVectors(range, options.seed).get());
         cloud->setLengthScale(options.lengthScale > 0.0f ? options.lengthScale : 4.0f * radius);
     }
-    if (options.shape == GlyphShape::Ellipsoid)
+    if (isAxesShape(options.shape))
         setEllipsoids(*cloud, range, options.seed, radius);
+    if (options.shape == GlyphShape::Superquadric)
+        setExponents(*cloud, range, options.seed);
     cloud->setShape(options.shape);
     // The positions last: the setters before them work on an empty cloud, and the culling chunks
     // are built once.

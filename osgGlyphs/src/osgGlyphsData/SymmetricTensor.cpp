@@ -99,3 +99,44 @@ double osgGlyphsData::detail::fractionalAnisotropy(const osg::Vec3d& eigenvalues
     const osg::Vec3d deviation = eigenvalues - osg::Vec3d(mean, mean, mean);
     return std::min(1.0, std::sqrt(1.5 * deviation.length2() / length2));
 }
+
+TensorSuperquadric osgGlyphsData::detail::kindlmannGlyph(const TensorEigen& eigen, double sharpness)
+{
+    // The eigenvectors by decreasing magnitude of their eigenvalues.
+    int order[3] = {0, 1, 2};
+    std::sort(order, order + 3,
+              [&](int a, int b) { return std::abs(eigen.values[a]) > std::abs(eigen.values[b]); });
+    osg::Vec3d vectors[3], magnitudes;
+    for (int k = 0; k < 3; ++k)
+    {
+        osg::Vec3d axis;
+        axis[order[k]] = 1.0;
+        vectors[k] = eigen.rotation * axis;
+        magnitudes[k] = std::abs(eigen.values[order[k]]);
+    }
+    const double sum = magnitudes[0] + magnitudes[1] + magnitudes[2];
+    const double linear = sum > 0.0 ? (magnitudes[0] - magnitudes[1]) / sum : 0.0;
+    const double planar = sum > 0.0 ? 2.0 * (magnitudes[1] - magnitudes[2]) / sum : 0.0;
+    // Body x, y, z: the two others, then the axis of symmetry.
+    const int body[3] = {linear >= planar ? 1 : 0, linear >= planar ? 2 : 1, linear >= planar ? 0 : 2};
+    TensorSuperquadric glyph;
+    osg::Vec3d columns[3];
+    for (int k = 0; k < 3; ++k)
+    {
+        columns[k] = vectors[body[k]];
+        glyph.semiAxes[k] = magnitudes[body[k]];
+    }
+    if ((columns[0] ^ columns[1]) * columns[2] < 0.0)
+        columns[0] = -columns[0]; // right-handed
+    // osg::Matrix holds the images of the basis vectors in its rows.
+    const osg::Matrixd turn(columns[0].x(), columns[0].y(), columns[0].z(), 0.0, columns[1].x(),
+                            columns[1].y(), columns[1].z(), 0.0, columns[2].x(), columns[2].y(),
+                            columns[2].z(), 0.0, 0.0, 0.0, 0.0, 1.0);
+    glyph.rotation = turn.getRotate();
+    // e1 along the axis of symmetry, e2 around it.
+    const double fromLinear = std::pow(1.0 - std::min(linear, 1.0), sharpness);
+    const double fromPlanar = std::pow(1.0 - std::min(planar, 1.0), sharpness);
+    glyph.exponents =
+        linear >= planar ? osg::Vec2d(fromLinear, fromPlanar) : osg::Vec2d(fromPlanar, fromLinear);
+    return glyph;
+}

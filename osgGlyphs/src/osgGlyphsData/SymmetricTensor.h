@@ -4,6 +4,7 @@
 #define OSGGLYPHSDATA_SYMMETRICTENSOR_H 1
 
 #include <osg/Quat>
+#include <osg/Vec2d>
 #include <osg/Vec3d>
 
 namespace osgGlyphsData
@@ -34,6 +35,21 @@ struct SymmetricTensor
 /** Jacobi's rotations until the off-diagonal part is below 1e-15 of the tensor's norm (at most 50
  * sweeps; 3x3 tensors take 4 to 6). */
 TensorEigen decompose(const SymmetricTensor& tensor);
+
+/** Kindlmann's superquadric tensor glyph ("Superquadric Tensor Glyphs", 2004) for a GlyphCloud
+ * superquadric: semi-axes |eigenvalue| (signs show in the colours; the glyph is of the magnitudes)
+ * along the eigenvectors, the body z axis the glyph's axis of symmetry (the largest magnitude's
+ * eigenvector where the tensor is more linear than planar, c_l >= c_p, the smallest's where it is
+ * more planar), and the exponents (e1 along it, e2 around it) from Westin's c_l and c_p of the
+ * magnitudes: (1 - c_l)^sharpness and (1 - c_p)^sharpness. Linear tensors are cylinders, planar
+ * ones discs, isotropic ones spheres, and those between rounded boxes. */
+struct TensorSuperquadric
+{
+    osg::Vec3d semiAxes;
+    osg::Quat rotation;
+    osg::Vec2d exponents;
+};
+TensorSuperquadric kindlmannGlyph(const TensorEigen& eigen, double sharpness = 3.0);
 
 /** Fractional anisotropy in [0, 1]: sqrt(3/2) |lambda - mean| / |lambda|; 0 for the zero tensor. */
 double fractionalAnisotropy(const osg::Vec3d& eigenvalues);

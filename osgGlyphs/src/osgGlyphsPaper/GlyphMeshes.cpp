@@ -114,7 +114,8 @@ GlyphMesh osgGlyphsPaper::detail::createGlyphMesh(GlyphShape shape, unsigned int
     switch (shape)
     {
     case GlyphShape::Sphere:
-    case GlyphShape::Ellipsoid: // not drawn by the paper's techniques (supportsShape)
+    case GlyphShape::Ellipsoid:
+    case GlyphShape::Superquadric: // neither drawn by the paper's techniques (supportsShape)
         builder.sphere(slices, stacks);
         break;
     case GlyphShape::Cone:

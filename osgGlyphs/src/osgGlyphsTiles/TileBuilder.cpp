@@ -158,7 +158,7 @@ bool TileBuilder::addGlyphs(const GlyphCloud& cloud, std::string& error)
     const osg::FloatArray* scalars = cloud.getScalars();
     const osg::Vec4ubArray* colors = cloud.getColors();
     const osg::Vec3Array* vectorArray = cloud.getVectors();
-    if (_style->getShape() == osgGlyphs::GlyphShape::Ellipsoid)
+    if (osgGlyphs::isAxesShape(_style->getShape()))
     {
         error = "tiles do not hold ellipsoids yet (their semi-axes and turns): choose another glyph shape";
         return false;

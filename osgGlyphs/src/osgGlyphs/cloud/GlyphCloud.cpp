@@ -40,7 +40,8 @@ GlyphCloud::GlyphCloud(const GlyphCloud& other, const osg::CopyOp& copyop)
       _radii(copyArray(other._radii, copyop)), _colors(copyArray(other._colors, copyop)),
       _scalars(copyArray(other._scalars, copyop)), _vectors(copyArray(other._vectors, copyop)),
       _occlusion(copyArray(other._occlusion, copyop)), _semiAxes(copyArray(other._semiAxes, copyop)),
-      _orientations(copyArray(other._orientations, copyop)), _colorMap(other._colorMap),
+      _orientations(copyArray(other._orientations, copyop)), _exponents(copyArray(other._exponents, copyop)),
+      _colorMap(other._colorMap),
       _technique(other._technique.valid() ? static_cast<GlyphTechnique*>(copyop(other._technique.get()))
                                           : nullptr),
       _radius(other._radius), _color(other._color), _colorMode(other._colorMode), _shape(other._shape),
@@ -209,6 +210,12 @@ void GlyphCloud::setSemiAxes(osg::Vec3Array* semiAxes)
 void GlyphCloud::setOrientations(osg::Vec4Array* orientations)
 {
     _orientations = orientations;
+    dirtyGlyphs();
+}
+
+void GlyphCloud::setExponents(osg::Vec2Array* exponents)
+{
+    _exponents = exponents;
     dirtyGlyphs();
 }
 
@@ -438,8 +445,8 @@ void GlyphCloud::sortSpatially()
           static_cast<osg::Array*>(_colors.get()), static_cast<osg::Array*>(_scalars.get()),
           static_cast<osg::Array*>(_vectors.get()), static_cast<osg::Array*>(_occlusion.get()),
           static_cast<osg::Array*>(_semiAxes.get()), static_cast<osg::Array*>(_orientations.get()),
-          static_cast<osg::Array*>(_packed.get()), static_cast<osg::Array*>(_unpacked.get()),
-          static_cast<osg::Array*>(_quantisedPositions.get()),
+          static_cast<osg::Array*>(_exponents.get()), static_cast<osg::Array*>(_packed.get()),
+          static_cast<osg::Array*>(_unpacked.get()), static_cast<osg::Array*>(_quantisedPositions.get()),
           static_cast<osg::Array*>(_ellipsoidRadii.get()), static_cast<osg::Array*>(_packedAxes.get()),
           static_cast<osg::Array*>(_packedRotations.get())})
     {
@@ -460,6 +467,7 @@ void GlyphCloud::sortSpatially()
     _packedVectors.set(hasVectorShape() ? _vectors.get() : nullptr);
     _packedSemiAxes.set(hasEllipsoidShape() ? _semiAxes.get() : nullptr);
     _packedOrientations.set(hasEllipsoidShape() ? _orientations.get() : nullptr);
+    _packedExponents.set(hasSuperquadricShape() ? _exponents.get() : nullptr);
     // The same chunks of the same glyphs, each now at its own index.
     auto sorted = std::make_shared<detail::GlyphChunks>(*_chunks);
     std::iota(sorted->ids.begin(), sorted->ids.end(), 0u);

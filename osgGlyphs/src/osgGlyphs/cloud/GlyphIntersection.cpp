@@ -68,6 +68,8 @@ bool GlyphCloud::getGlyphSolid(unsigned int i, detail::GlyphSolid& solid) const
         decodeEllipsoid(i, semiAxes);
         for (int k = 0; k < 3; ++k)
             solid.semiAxes[k] = glm::dvec3(semiAxes[k].x(), semiAxes[k].y(), semiAxes[k].z());
+        const osg::Vec2 exponents = decodeExponents(i);
+        solid.exponents = glm::dvec2(exponents.x(), exponents.y());
         return true;
     }
     if (!hasVectorShape())

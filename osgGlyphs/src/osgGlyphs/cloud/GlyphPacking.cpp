@@ -26,10 +26,14 @@ enum SkipReason : uint8_t
     SKIP_VECTOR = 8,
     SKIP_ZERO_VECTOR = 16,
     SKIP_SEMI_AXES = 32,
-    SKIP_ORIENTATION = 64
+    SKIP_ORIENTATION = 64,
+    SKIP_EXPONENTS = 128
 };
 
-const int NUM_SKIP_REASONS = 7;
+const int NUM_SKIP_REASONS = 8;
+
+const float MIN_EXPONENT = 0.1f, MAX_EXPONENT = 2.0f;
+const osg::Vec2 ELLIPSOID_EXPONENTS(1.0f, 1.0f);
 
 const uint16_t HALF_ONE = 0x3c00;
 const osg::Vec4 IDENTITY_ROTATION(0.0f, 0.0f, 0.0f, 1.0f);
@@ -42,6 +46,45 @@ bool isFinite(const osg::Vec3& v)
 bool areValidSemiAxes(const osg::Vec3& a)
 {
     return isFinite(a) && a.x() > 0.0f && a.y() > 0.0f && a.z() > 0.0f;
+}
+
+bool areValidExponents(const osg::Vec2& e)
+{
+    return std::isfinite(e.x()) && std::isfinite(e.y()) && e.x() > 0.0f && e.y() > 0.0f;
+}
+
+/** An exponent in a byte, e = byte / 127, within [MIN_EXPONENT, MAX_EXPONENT]. */
+unsigned int toExponentByte(float exponent)
+{
+    return static_cast<unsigned int>(std::lround(std::clamp(exponent, MIN_EXPONENT, MAX_EXPONENT) * 127.0f));
+}
+
+/** superquadric.glsl's superquadricBoundScale(): the scale of the semi-axes whose ellipsoid holds
+ * the superquadric. */
+float superquadricBoundScale(const osg::Vec2& exponents)
+{
+    const float excess = std::max(1.0f - exponents.x(), 0.0f) + std::max(1.0f - exponents.y(), 0.0f);
+    return std::min(std::exp2(0.5f * excess), 1.7320508f);
+}
+
+/** The L^p norm of (a, b), p >= 1, or the largest for p of 1e9 and more. */
+double normOfPair(double a, double b, double p)
+{
+    a = std::abs(a);
+    b = std::abs(b);
+    const double largest = std::max(a, b);
+    if (!(largest > 0.0) || p >= 1e9)
+        return largest;
+    return largest * std::pow(std::pow(a / largest, p) + std::pow(b / largest, p), 1.0 / p);
+}
+
+/** The extent along w of the unit-frame superquadric of exponents (e1, e2), max w . p over it: the
+ * dual of its norm (superquadric.glsl), an L^s* norm of an L^q* norm with 1/q + 1/q* = 1. */
+double superquadricSupport(const osg::Vec3d& w, const osg::Vec2& exponents)
+{
+    auto dual = [](double p) { return p > 1.0 + 1e-9 ? p / (p - 1.0) : 1e9; };
+    const double q = 2.0 / exponents.y(), s = 2.0 / exponents.x();
+    return normOfPair(normOfPair(w.x(), w.y(), dual(q)), w.z(), dual(s));
 }
 
 bool isValidRotation(const osg::Vec4& q)
@@ -109,6 +152,8 @@ unsigned int GlyphCloud::countGlyphs(bool report) const
         count = _semiAxes.valid() ? count : 0;
         limit(_semiAxes.get(), "semi-axis");
         limit(_orientations.get(), "orientation");
+        if (hasSuperquadricShape())
+            limit(_exponents.get(), "exponent");
     }
     return static_cast<unsigned int>(count);
 }
@@ -120,10 +165,13 @@ void GlyphCloud::updateGlyphs(bool report)
     const osg::Array* vectors = hasVectorShape() ? _vectors.get() : nullptr;
     const osg::Array* semiAxes = hasEllipsoidShape() ? _semiAxes.get() : nullptr;
     const osg::Array* orientations = hasEllipsoidShape() ? _orientations.get() : nullptr;
-    const bool ellipsoids =
-        resized || _packedSemiAxes.changedFrom(semiAxes) || _packedOrientations.changedFrom(orientations);
+    const osg::Array* exponents = hasSuperquadricShape() ? _exponents.get() : nullptr;
+    const bool ellipsoids = resized || _packedSemiAxes.changedFrom(semiAxes) ||
+                            _packedOrientations.changedFrom(orientations) ||
+                            _packedExponents.changedFrom(exponents);
     _packedSemiAxes.set(semiAxes);
     _packedOrientations.set(orientations);
+    _packedExponents.set(exponents);
     if (resized)
         _numGlyphs = count;
     if (ellipsoids)
@@ -210,9 +258,12 @@ std::vector<unsigned int> GlyphCloud::updateSkipped(bool positions, bool radii, 
         update(SKIP_SEMI_AXES, [&](unsigned int i) { return !areValidSemiAxes((*_semiAxes)[i]); });
         update(SKIP_ORIENTATION, [&](unsigned int i)
                { return _orientations.valid() && !isValidRotation((*_orientations)[i]); });
+        update(
+            SKIP_EXPONENTS, [&](unsigned int i)
+            { return hasSuperquadricShape() && _exponents.valid() && !areValidExponents((*_exponents)[i]); });
     }
     else if (ellipsoids)
-        update(SKIP_SEMI_AXES | SKIP_ORIENTATION, [](unsigned int) { return false; });
+        update(SKIP_SEMI_AXES | SKIP_ORIENTATION | SKIP_EXPONENTS, [](unsigned int) { return false; });
     _numSkipped =
         static_cast<unsigned int>(_numGlyphs - std::count(_skipped.begin(), _skipped.end(), uint8_t(0)));
     return flipped;
@@ -400,6 +451,7 @@ void GlyphCloud::reportSkipped() const
     report(counts[3], "have a non-finite vector (NaN or inf)");
     report(counts[5], "have semi-axes that are not all finite and > 0");
     report(counts[6], "have an orientation quaternion that is zero or not finite");
+    report(counts[7], "have superquadric exponents that are not both finite and > 0");
     if (counts[4])
         OSG_INFO << "osgGlyphs::GlyphCloud \"" << getName() << "\": " << counts[4] << " of " << _numGlyphs
                  << " glyphs have a zero vector and no direction; they are not drawn" << std::endl;
@@ -426,12 +478,23 @@ void GlyphCloud::packEllipsoids()
     for (unsigned int i = 0; i < count; ++i)
     {
         const osg::Vec3& a = (*_semiAxes)[i];
-        const bool valid = areValidSemiAxes(a);
-        const float largest = valid ? std::max(a.x(), std::max(a.y(), a.z())) : 0.0f;
+        const osg::Vec2 e =
+            hasSuperquadricShape() && _exponents.valid() ? (*_exponents)[i] : ELLIPSOID_EXPONENTS;
+        const bool valid = areValidSemiAxes(a) && areValidExponents(e);
+        // A superquadric's radius bounds it: its semi-axes are fractions of that, and the 16 bits
+        // left hold its exponents.
+        const unsigned int exponentBytes =
+            hasSuperquadricShape() && valid ? (toExponentByte(e.x()) << 8) | toExponentByte(e.y()) : 0u;
+        const float bound = exponentBytes
+                                ? superquadricBoundScale(osg::Vec2(float(exponentBytes >> 8) / 127.0f,
+                                                                   float(exponentBytes & 255u) / 127.0f))
+                                : 1.0f;
+        const float largest = valid ? std::max(a.x(), std::max(a.y(), a.z())) * bound : 0.0f;
         (*_ellipsoidRadii)[i] = largest;
-        (*_packedAxes)[i] = valid ? osg::Vec4us(toUnorm16(a.x() / largest), toUnorm16(a.y() / largest),
-                                                toUnorm16(a.z() / largest), 0)
-                                  : osg::Vec4us();
+        (*_packedAxes)[i] =
+            valid ? osg::Vec4us(toUnorm16(a.x() / largest), toUnorm16(a.y() / largest),
+                                toUnorm16(a.z() / largest), static_cast<uint16_t>(exponentBytes))
+                  : osg::Vec4us();
         osg::Vec4 q = _orientations.valid() ? (*_orientations)[i] : IDENTITY_ROTATION;
         if (!isValidRotation(q))
         {
@@ -464,6 +527,14 @@ void GlyphCloud::decodeEllipsoid(unsigned int i, osg::Vec3 semiAxes[3]) const
         body[k] = radius * (a[k] / 65535.0f);
         semiAxes[k] = q * body;
     }
+}
+
+osg::Vec2 GlyphCloud::decodeExponents(unsigned int i) const
+{
+    if (!hasSuperquadricShape() || i >= _packedAxes->size())
+        return ELLIPSOID_EXPONENTS;
+    const unsigned int word = (*_packedAxes)[i].w();
+    return osg::Vec2(float(word >> 8) / 127.0f, float(word & 255u) / 127.0f);
 }
 
 float GlyphCloud::decodeRadius(unsigned int i) const
@@ -514,13 +585,15 @@ osg::BoundingBox GlyphCloud::computeGlyphBox(unsigned int i) const
     if (hasEllipsoidShape())
     {
         // The extent along each of the cloud's axes: the length of that row of the semi-axes.
+        // The extent along each of the cloud's axes: the support of the shape in the frame where its
+        // semi-axes are unit, along that row of the semi-axes (for an ellipsoid, the row's length).
         osg::Vec3 semiAxes[3];
         decodeEllipsoid(i, semiAxes);
+        const osg::Vec2 exponents = decodeExponents(i);
         osg::Vec3 extent;
         for (int row = 0; row < 3; ++row)
-            extent[row] =
-                std::sqrt(semiAxes[0][row] * semiAxes[0][row] + semiAxes[1][row] * semiAxes[1][row] +
-                          semiAxes[2][row] * semiAxes[2][row]);
+            extent[row] = static_cast<float>(superquadricSupport(
+                osg::Vec3d(semiAxes[0][row], semiAxes[1][row], semiAxes[2][row]), exponents));
         box.expandBy(p - extent);
         box.expandBy(p + extent);
         return box;

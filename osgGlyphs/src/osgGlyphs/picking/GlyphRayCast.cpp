@@ -55,6 +55,104 @@ bool intersectEllipsoid(const dvec3& origin, const dvec3& direction, const dvec3
     return true;
 }
 
+/** superquadric.glsl: the norm whose unit ball is the superquadric, and its gradient. */
+double superquadricNorm(const dvec3& p, const glm::dvec2& exponents, dvec3& gradient)
+{
+    dvec3 a = glm::abs(p);
+    const double largest = std::max(a.x, std::max(a.y, a.z));
+    if (!(largest > 0.0))
+    {
+        gradient = dvec3(0.0);
+        return 0.0;
+    }
+    a = glm::max(a / largest, dvec3(1e-20));
+    const double q = 2.0 / exponents.y, s = 2.0 / exponents.x;
+    const double xq = std::pow(a.x, q), yq = std::pow(a.y, q), rq = xq + yq;
+    const double rho = std::pow(rq, 1.0 / q), rs = std::pow(rho, s), zs = std::pow(a.z, s);
+    const double ns = rs + zs, n = std::pow(ns, 1.0 / s);
+    const double outer = n / ns, dRho = outer * rs / rho;
+    gradient = glm::sign(p) * dvec3(dRho * rho / rq * xq / a.x, dRho * rho / rq * yq / a.y, outer * zs / a.z);
+    return largest * n;
+}
+
+double superquadricAlong(const dvec3& o, const dvec3& d, double t, const glm::dvec2& exponents, double& slope)
+{
+    dvec3 gradient;
+    const double h = superquadricNorm(o + t * d, exponents, gradient) - 1.0;
+    slope = glm::dot(gradient, d);
+    return h;
+}
+
+/** superquadric.glsl: where the ray meets the superquadric, by the same steps. */
+bool intersectSuperquadric(const dvec3& origin, const dvec3& direction, const dvec3& centre,
+                           const glm::dmat3& semiAxes, const glm::dvec2& exponents, double& tEnter,
+                           double& tLeave, dvec3& nEnter)
+{
+    const glm::dmat3 inverse = glm::inverse(semiAxes);
+    const dvec3 o = inverse * (origin - centre), d = inverse * direction;
+    double lo = -INFINITE_DISTANCE, hi = INFINITE_DISTANCE;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        const double safe = std::abs(d[axis]) < 1e-30 ? 1e-30 : d[axis];
+        const double tA = (-1.0 - o[axis]) / safe, tB = (1.0 - o[axis]) / safe;
+        lo = std::max(lo, std::min(tA, tB));
+        hi = std::min(hi, std::max(tA, tB));
+    }
+    if (!(lo < hi))
+        return false;
+    double gLo, gHi;
+    double hLo = superquadricAlong(o, d, lo, exponents, gLo);
+    double hHi = superquadricAlong(o, d, hi, exponents, gHi);
+    bool found = hLo <= 0.0 || hHi <= 0.0;
+    double inside = hLo <= 0.0 ? lo : hi;
+    for (int i = 0; i < 24 && !found; ++i)
+    {
+        if (!(gLo < 0.0) || !(gHi > 0.0))
+            return false;
+        const double tx = (hHi - hLo + gLo * lo - gHi * hi) / (gLo - gHi);
+        if (hLo + gLo * (tx - lo) > 0.0)
+            return false;
+        const double t = i % 3 == 2 ? 0.5 * (lo + hi) : std::clamp(tx, lo, hi);
+        double g;
+        const double h = superquadricAlong(o, d, t, exponents, g);
+        if (h <= 0.0)
+        {
+            found = true;
+            inside = t;
+        }
+        else if (g < 0.0)
+        {
+            lo = t;
+            hLo = h;
+            gLo = g;
+        }
+        else
+        {
+            hi = t;
+            hHi = h;
+            gHi = g;
+        }
+    }
+    if (!found)
+        return false;
+    tEnter = lo;
+    tLeave = hi;
+    for (int i = 0; i < 16 && hLo > 2e-7 && gLo < 0.0; ++i)
+    {
+        tEnter = std::min(tEnter - hLo / gLo, inside);
+        hLo = superquadricAlong(o, d, tEnter, exponents, gLo);
+    }
+    for (int i = 0; i < 16 && hHi > 2e-7 && gHi > 0.0; ++i)
+    {
+        tLeave = std::max(tLeave - hHi / gHi, inside);
+        hHi = superquadricAlong(o, d, tLeave, exponents, gHi);
+    }
+    dvec3 gradient;
+    superquadricNorm(o + tEnter * d, exponents, gradient);
+    nEnter = glm::normalize(glm::transpose(inverse) * gradient);
+    return true;
+}
+
 /** vector.glsl: two unit vectors that complete the axis to a right-handed orthonormal frame. */
 void axisFrame(const dvec3& axis, dvec3& u, dvec3& v)
 {
@@ -181,6 +279,18 @@ bool osgGlyphs::detail::castRay(const GlyphSolid& glyph, const dvec3& origin, co
             return false;
         t = std::max(tEnter, 0.0);
         normal = tEnter >= 0.0 ? (origin + direction * t - glyph.base) / glyph.radius : -direction;
+        return true;
+    }
+    if (glyph.shape == GlyphShape::Superquadric)
+    {
+        double tEnter, tLeave;
+        dvec3 nEnter;
+        if (!intersectSuperquadric(origin, direction, glyph.base, glyph.semiAxes, glyph.exponents, tEnter,
+                                   tLeave, nEnter) ||
+            tLeave < 0.0)
+            return false;
+        t = std::max(tEnter, 0.0);
+        normal = tEnter >= 0.0 ? nEnter : -direction;
         return true;
     }
     if (glyph.shape == GlyphShape::Ellipsoid)

@@ -27,6 +27,7 @@ struct GlyphSolid
     double length = 0.0;                           // vector glyphs: tail to apex or head tip
     glm::dvec2 arrowParams = glm::dvec2(0.3, 2.0); // head length / length, head radius / radius
     glm::dmat3 semiAxes = glm::dmat3(1.0);         // ellipsoids: the semi-axes as columns
+    glm::dvec2 exponents = glm::dvec2(1.0);        // superquadrics: e1, e2
 };
 
 /** The nearest surface point along origin + t * direction (unit direction), t >= 0, and its unit

@@ -31,9 +31,9 @@ std::vector<GlyphAttributeBinding> osgGlyphs::getGlyphAttributeBindings(GlyphAtt
     bindings.push_back({"osgGlyphs_vector", VECTOR_ATTRIBUTE, "vec3", defined(detail::VECTOR_SHAPE_DEFINE)});
     bindings.push_back(
         {"osgGlyphs_ambientOcclusion", OCCLUSION_ATTRIBUTE, "vec4", defined(GLYPH_AMBIENT_OCCLUSION_DEFINE)});
-    bindings.push_back({"osgGlyphs_axes", AXES_ATTRIBUTE, "vec4", defined(detail::ELLIPSOID_SHAPE_DEFINE)});
+    bindings.push_back({"osgGlyphs_axes", AXES_ATTRIBUTE, "vec4", defined(detail::AXES_SHAPE_DEFINE)});
     bindings.push_back(
-        {"osgGlyphs_orientation", ORIENTATION_ATTRIBUTE, "vec4", defined(detail::ELLIPSOID_SHAPE_DEFINE)});
+        {"osgGlyphs_orientation", ORIENTATION_ATTRIBUTE, "vec4", defined(detail::AXES_SHAPE_DEFINE)});
     return bindings;
 }
 

@@ -21,7 +21,7 @@ const char* const osgGlyphs::detail::COMPRESSED_POSITIONS_DEFINE = "OSGGLYPHS_CO
 const char* const osgGlyphs::detail::CLIP_PLANES_DEFINE = "OSGGLYPHS_CLIP_PLANES";
 // Follows from the shape defines in the generated GLSL: never set by a StateSet.
 const char* const osgGlyphs::detail::VECTOR_SHAPE_DEFINE = "OSGGLYPHS_VECTOR_SHAPE";
-const char* const osgGlyphs::detail::ELLIPSOID_SHAPE_DEFINE = "OSGGLYPHS_SHAPE_ELLIPSOID";
+const char* const osgGlyphs::detail::AXES_SHAPE_DEFINE = "OSGGLYPHS_AXES_SHAPE";
 
 namespace
 {
@@ -30,7 +30,8 @@ const std::pair<GlyphShape, const char*> SHAPE_DEFINES[] = {
     {GlyphShape::Cone, "OSGGLYPHS_SHAPE_CONE"},
     {GlyphShape::Arrow, "OSGGLYPHS_SHAPE_ARROW"},
     {GlyphShape::Cylinder, "OSGGLYPHS_SHAPE_CYLINDER"},
-    {GlyphShape::Ellipsoid, detail::ELLIPSOID_SHAPE_DEFINE}};
+    {GlyphShape::Ellipsoid, "OSGGLYPHS_SHAPE_ELLIPSOID"},
+    {GlyphShape::Superquadric, "OSGGLYPHS_SHAPE_SUPERQUADRIC"}};
 
 const std::pair<GlyphColorMode, const char*> COLOR_DEFINES[] = {
     {GlyphColorMode::RGBA, detail::COLOR_RGBA_DEFINE}, {GlyphColorMode::Scalar, "OSGGLYPHS_COLOR_SCALAR"}};
@@ -84,15 +85,22 @@ std::string osgGlyphs::detail::generateDefinesGlsl()
     glsl << "#pragma import_defines(";
     for (std::size_t i = 0; i < all.size(); ++i)
         glsl << (i ? ", " : "") << all[i];
-    glsl << ")\n#if ";
-    const char* separator = "";
-    for (const auto& [shape, define] : SHAPE_DEFINES)
-        if (isVectorShape(shape))
-        {
-            glsl << separator << "defined(" << define << ")";
-            separator = " || ";
-        }
-    glsl << "\n#define " << VECTOR_SHAPE_DEFINE << " 1\n#endif\n";
+    glsl << ")\n";
+    // The defines that follow from the shape's: one per family of shapes.
+    auto defineFamily = [&glsl](bool (*isInFamily)(GlyphShape), const char* familyDefine)
+    {
+        glsl << "#if ";
+        const char* separator = "";
+        for (const auto& [shape, define] : SHAPE_DEFINES)
+            if (isInFamily(shape))
+            {
+                glsl << separator << "defined(" << define << ")";
+                separator = " || ";
+            }
+        glsl << "\n#define " << familyDefine << " 1\n#endif\n";
+    };
+    defineFamily(isVectorShape, VECTOR_SHAPE_DEFINE);
+    defineFamily(isAxesShape, AXES_SHAPE_DEFINE);
     return glsl.str();
 }
 

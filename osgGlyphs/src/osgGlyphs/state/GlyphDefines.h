@@ -17,7 +17,7 @@ namespace detail
 extern const char* const FLOAT_ATTRIBUTES_DEFINE;
 extern const char* const COLOR_RGBA_DEFINE;
 extern const char* const VECTOR_SHAPE_DEFINE;
-extern const char* const ELLIPSOID_SHAPE_DEFINE;
+extern const char* const AXES_SHAPE_DEFINE;
 /** Set by a cloud (not a variant) whose positions are 16-bit integers on a grid. */
 extern const char* const COMPRESSED_POSITIONS_DEFINE;
 /** Set by the cull traversal (not a variant) where any of OSG's clip planes is on. */

@@ -15,7 +15,8 @@
 //   (domainVersionEntry(), OSGGLYPHS_SERIALIZER_DOMAIN_ENTRY in <osgGlyphs/Version>). Tile
 //   archives ask. Not for .osgx: OSG 3.6.5 writes the domain into XML files but cannot
 //   read such a file back.
-// - 2: GlyphCloud's SemiAxes and Orientations (ellipsoids), after UPDATE_TO_VERSION_SCOPED(2).
+// - 2: GlyphCloud's SemiAxes, Orientations and Exponents (ellipsoids, superquadrics), after
+//   UPDATE_TO_VERSION_SCOPED(2).
 // The properties of version 0 and 1 are outside any UPDATE_TO_VERSION_SCOPED, so files of every
 // version hold them. A property added later goes after UPDATE_TO_VERSION_SCOPED(3),
 // OSGGLYPHS_SERIALIZER_VERSION (and its entry) becomes 3, and the writers that should store it ask

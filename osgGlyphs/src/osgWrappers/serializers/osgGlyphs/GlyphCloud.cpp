@@ -72,14 +72,13 @@ static bool writeByName(osgDB::OutputStream& os, const GlyphCloud& cloud)
 
 static bool writeShape(osgDB::OutputStream& os, const GlyphCloud& cloud)
 {
-    if (cloud.getShape() == osgGlyphs::GlyphShape::Ellipsoid &&
-        os.getFileVersion(OSGGLYPHS_SERIALIZER_DOMAIN) < 2)
-        OSG_WARN
-            << "osgGlyphs: GlyphCloud \"" << cloud.getName()
-            << "\" is written without its ellipsoids' semi-axes and orientations, which need version 2 of "
-               "the osgGlyphs serializers: give the writer options whose plugin string data "
-               "\"CustomDomains\" is \""
-            << OSGGLYPHS_SERIALIZER_DOMAIN_ENTRY << "\"" << std::endl;
+    if (osgGlyphs::isAxesShape(cloud.getShape()) && os.getFileVersion(OSGGLYPHS_SERIALIZER_DOMAIN) < 2)
+        OSG_WARN << "osgGlyphs: GlyphCloud \"" << cloud.getName()
+                 << "\" is written without its glyphs' semi-axes, orientations and exponents, which need "
+                    "version 2 of "
+                    "the osgGlyphs serializers: give the writer options whose plugin string data "
+                    "\"CustomDomains\" is \""
+                 << OSGGLYPHS_SERIALIZER_DOMAIN_ENTRY << "\"" << std::endl;
     // Shape is the cloud's first property. Text streams write floats with 6 significant digits
     // by default; from here on they get enough digits for every float to read back exactly.
     os << exactFloats;
@@ -387,6 +386,7 @@ REGISTER_CUSTOM_OBJECT_WRAPPER(osgGlyphs, osgGlyphs_GlyphCloud, new osgGlyphs::G
         UPDATE_TO_VERSION_SCOPED(2)
         ADD_OBJECT_SERIALIZER(SemiAxes, osg::Vec3Array, NULL);
         ADD_OBJECT_SERIALIZER(Orientations, osg::Vec4Array, NULL);
+        ADD_OBJECT_SERIALIZER(Exponents, osg::Vec2Array, NULL);
     }
 }
 

@@ -1,0 +1,123 @@
+// osgGlyphs: superquadrics (Barr's superellipsoids), exact: their ray intersection. A superquadric
+// is an ellipsoid's centre and semi-axes (ellipsoid.glsl) and two exponents, e1 along its z axis
+// and e2 around it, each in [0.1, 2]: in the frame where the semi-axes are unit, it is the unit
+// ball of the norm
+//   N(p) = ((|x|^q + |y|^q)^(s/q) + |z|^s)^(1/s),  q = 2 / e2, s = 2 / e1,
+// an L^s norm of an L^q norm: convex (q, s >= 1), 1 on the surface, within the unit cube.
+
+#ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
+
+/** A scale of the semi-axes whose ellipsoid holds the superquadric: 2^((1 - e)/2) per exponent
+ * below 1 (the L^2 norm over an L^p norm of two components, p >= 2), at most sqrt(3) (the cube). */
+float superquadricBoundScale(vec2 exponents)
+{
+    vec2 excess = max(1.0 - exponents, 0.0);
+    return min(exp2(0.5 * (excess.x + excess.y)), 1.7320508);
+}
+
+/** N(p) and its gradient (N is homogeneous of degree 1: the gradient is that of p / max|p_i|,
+ * where every power is at most 1). */
+float superquadricNorm(vec3 p, vec2 exponents, out vec3 gradient)
+{
+    vec3 a = abs(p);
+    float largest = max(max(a.x, a.y), a.z);
+    if (!(largest > 0.0))
+    {
+        gradient = vec3(0.0);
+        return 0.0;
+    }
+    a = max(a / largest, vec3(1e-20));
+    float q = 2.0 / exponents.y, s = 2.0 / exponents.x;
+    float xq = pow(a.x, q), yq = pow(a.y, q);
+    float rq = xq + yq;              // rho^q
+    float rho = pow(rq, 1.0 / q);    // the L^q norm of (x, y)
+    float rs = pow(rho, s), zs = pow(a.z, s);
+    float ns = rs + zs;              // N^s, at least 1 here
+    float n = pow(ns, 1.0 / s);
+    // dN/dz = N^(1-s) z^(s-1); dN/dx = N^(1-s) rho^(s-1) rho^(1-q) x^(q-1); powers as quotients.
+    float outer = n / ns;
+    float dRho = outer * rs / rho;
+    gradient = sign(p) * vec3(dRho * rho / rq * xq / a.x, dRho * rho / rq * yq / a.y, outer * zs / a.z);
+    return largest * n;
+}
+
+/** H(t) = N(o + t d) - 1 along a ray in the unit frame, and its derivative. */
+float superquadricAlong(vec3 o, vec3 d, float t, vec2 exponents, out float slope)
+{
+    vec3 gradient;
+    float h = superquadricNorm(o + t * d, exponents, gradient) - 1.0;
+    slope = dot(gradient, d);
+    return h;
+}
+
+/** Where the ray origin + t * direction runs inside the superquadric (centre, A^-1, exponents),
+ * with the unit outward normals there; false if it misses. H is convex along the ray: its minimum
+ * over the ray's span of the unit cube is bracketed by tangents (Kelley's cutting planes, which
+ * also bound H from below: a bound above 0 is a certain miss), and once a point inside is found,
+ * Newton's steps from the outside point on each side converge monotonically to the surface, never
+ * past it. */
+bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes, vec2 exponents,
+                      out Span span)
+{
+    vec3 o = inverseAxes * (origin - centre), d = inverseAxes * direction;
+    vec3 safe = mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
+    vec3 tA = (-1.0 - o) / safe, tB = (1.0 - o) / safe;
+    vec3 tNear = min(tA, tB), tFar = max(tA, tB);
+    float lo = max(max(tNear.x, tNear.y), tNear.z), hi = min(min(tFar.x, tFar.y), tFar.z);
+    if (!(lo < hi))
+        return false;
+    float gLo, gHi;
+    float hLo = superquadricAlong(o, d, lo, exponents, gLo);
+    float hHi = superquadricAlong(o, d, hi, exponents, gHi);
+    float inside = hLo <= 0.0 ? lo : (hHi <= 0.0 ? hi : -1.0e30);
+    for (int i = 0; i < 24 && inside == -1.0e30; ++i)
+    {
+        if (!(gLo < 0.0) || !(gHi > 0.0))
+            return false; // the minimum at an end, where H > 0
+        // The tangents at both ends meet at tx, where they bound H from below.
+        float tx = (hHi - hLo + gLo * lo - gHi * hi) / (gLo - gHi);
+        if (hLo + gLo * (tx - lo) > 0.0)
+            return false;
+        float t = (i % 3 == 2) ? 0.5 * (lo + hi) : clamp(tx, lo, hi);
+        float g;
+        float h = superquadricAlong(o, d, t, exponents, g);
+        if (h <= 0.0)
+            inside = t;
+        else if (g < 0.0)
+        {
+            lo = t;
+            hLo = h;
+            gLo = g;
+        }
+        else
+        {
+            hi = t;
+            hHi = h;
+            gHi = g;
+        }
+    }
+    if (inside == -1.0e30)
+        return false; // a ray that grazes it closer than the steps tell
+    float enter = lo, leave = hi;
+    for (int i = 0; i < 16 && hLo > 2e-7 && gLo < 0.0; ++i)
+    {
+        enter = min(enter - hLo / gLo, inside);
+        hLo = superquadricAlong(o, d, enter, exponents, gLo);
+    }
+    for (int i = 0; i < 16 && hHi > 2e-7 && gHi > 0.0; ++i)
+    {
+        leave = max(leave - hHi / gHi, inside);
+        hHi = superquadricAlong(o, d, leave, exponents, gHi);
+    }
+    vec3 gradient;
+    superquadricNorm(o + enter * d, exponents, gradient);
+    mat3 toNormal = transpose(inverseAxes);
+    span = Span(enter, leave, normalize(toNormal * gradient), vec3(0.0));
+#ifdef OSGGLYPHS_CLIP_PLANES // the far side's normal is shown only through a clip plane's cut
+    superquadricNorm(o + leave * d, exponents, gradient);
+    span.nLeave = normalize(toNormal * gradient);
+#endif
+    return true;
+}
+
+#endif
