@@ -64,6 +64,15 @@ bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes
     vec3 tA = (-1.0 - o) / safe, tB = (1.0 - o) / safe;
     vec3 tNear = min(tA, tB), tFar = max(tA, tB);
     float lo = max(max(tNear.x, tNear.y), tNear.z), hi = min(min(tFar.x, tFar.y), tFar.z);
+    // Within the sphere of the bound too (superquadricBoundScale): most rays that miss stop here.
+    float a = dot(d, d), b = dot(o, d) / a, bound = superquadricBoundScale(exponents);
+    vec3 closest = o - b * d;
+    float h2 = bound * bound - dot(closest, closest);
+    if (h2 < 0.0)
+        return false;
+    float h = sqrt(h2 / a);
+    lo = max(lo, -b - h);
+    hi = min(hi, -b + h);
     if (!(lo < hi))
         return false;
     float gLo, gHi;
@@ -104,11 +113,16 @@ bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes
         enter = min(enter - hLo / gLo, inside);
         hLo = superquadricAlong(o, d, enter, exponents, gLo);
     }
-    for (int i = 0; i < 16 && hHi > 2e-7 && gHi > 0.0; ++i)
-    {
-        leave = max(leave - hHi / gHi, inside);
-        hHi = superquadricAlong(o, d, leave, exponents, gHi);
-    }
+    // Where the ray leaves matters to a clip plane's cut, and to a ray that starts inside (then
+    // keepNearerDrawnPoint draws the near plane's cut); elsewhere the bracket's end will do.
+#ifndef OSGGLYPHS_CLIP_PLANES
+    if (enter < 0.0)
+#endif
+        for (int i = 0; i < 16 && hHi > 2e-7 && gHi > 0.0; ++i)
+        {
+            leave = max(leave - hHi / gHi, inside);
+            hHi = superquadricAlong(o, d, leave, exponents, gHi);
+        }
     vec3 gradient;
     superquadricNorm(o + enter * d, exponents, gradient);
     mat3 toNormal = transpose(inverseAxes);

@@ -189,6 +189,46 @@ TEST_P(Superquadrics, SmallSuperquadricsAreExactToo)
     EXPECT_EQ(agreement.wrongLabel, 0);
 }
 
+TEST_P(Superquadrics, CrossingTheNearPlaneIsCutNotDropped)
+{
+    if (std::string(GetParam()) == "point-sprite")
+        GTEST_SKIP() << "a point sprite covers GL_POINT_SIZE_RANGE at most, not the whole view";
+    // The near plane is at y = -9; the rounded bar reaches from y = -10.2 to y = -7.8. Pixels whose
+    // ray from the near plane starts inside show the cut at depth 0; the others the surface beyond.
+    const std::vector<SuperquadricSpec> glyphs = {{osg::Vec3(0.1f, -9.0f, 0.0f), osg::Vec3(0.3f, 1.2f, 0.2f),
+                                                   turn(0.2, {0, 0, 1}), osg::Vec2(0.3f, 0.5f), RED}};
+    const Frame frame = render(createSuperquadricCloud(glyphs), "superquadric_near_plane");
+    const AnalyticScene truth = truthOf(glyphs);
+    int cut = 0, wrong = 0, beyond = 0;
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x)
+        {
+            if (truth.certainLabel(frame, x, y) == AnalyticScene::AMBIGUOUS)
+                continue;
+            osg::Vec3d origin, direction;
+            frame.pixelRay(x + 0.5, y + 0.5, origin, direction);
+            const RayHit fromNear = truth.cast(origin, direction);
+            const bool startsInside = fromNear.hit() && fromNear.normal * direction > 0.0;
+            if (startsInside)
+            {
+                ++cut;
+                wrong += frame.isCovered(x, y) && frame.depthAt(x, y) < 1e-6f ? 0 : 1;
+            }
+            else if (fromNear.hit())
+            {
+                ++beyond;
+                wrong += frame.isCovered(x, y) &&
+                                 std::fabs(frame.depthAt(x, y) - frame.windowDepth(fromNear.point)) < 1e-5
+                             ? 0
+                             : 1;
+            }
+            else
+                wrong += frame.isCovered(x, y) ? 1 : 0;
+        }
+    EXPECT_GT(cut, 1000);
+    EXPECT_EQ(wrong, 0) << "of " << cut << " cut and " << beyond << " beyond";
+}
+
 TEST_P(Superquadrics, LitColourFollowsTheAnalyticNormal)
 {
     renderer.getViewer()->setLightingMode(osg::View::NO_LIGHT);
