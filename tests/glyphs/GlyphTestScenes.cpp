@@ -4,6 +4,8 @@
 
 #include <osg/Geometry>
 #include <osgDB/FileUtils>
+#include <osgUtil/IntersectionVisitor>
+#include <osgUtil/LineSegmentIntersector>
 
 #include <algorithm>
 #include <cmath>
@@ -188,6 +190,39 @@ CoverageComparison compareCoveredCentres(const Frame& frame, const AnalyticScene
             frame.pixelRay(x + 0.5, y + 0.5, origin, direction);
             result.depthErrors.push_back(std::fabs((drawn - origin) * direction - hit.distance) / size);
         }
+    return result;
+}
+
+PickingAgreement comparePicksWithTruth(osg::Node& scene, const AnalyticScene& truth)
+{
+    PickingAgreement result;
+    for (int i = 0; i < 400; ++i)
+    {
+        const osg::Vec3d start(-4.0 + 8.0 * (i % 20) / 19.0, -10.0, -2.8 + 5.6 * (i / 20) / 19.0);
+        const osg::Vec3d end = start + osg::Vec3d(0.05 * std::sin(i), 20.0, 0.05 * std::cos(i));
+        osg::ref_ptr<osgUtil::LineSegmentIntersector> picker =
+            new osgUtil::LineSegmentIntersector(start, end);
+        picker->setIntersectionLimit(osgUtil::Intersector::LIMIT_NEAREST);
+        osgUtil::IntersectionVisitor visitor(picker.get());
+        scene.accept(visitor);
+        osg::Vec3d direction = end - start;
+        direction.normalize();
+        const RayHit expected = truth.cast(start, direction);
+        if (picker->containsIntersections() != expected.hit())
+        {
+            ++result.wrongHit;
+            continue;
+        }
+        if (!expected.hit())
+            continue;
+        ++result.hits;
+        const osgUtil::LineSegmentIntersector::Intersection& hit = picker->getFirstIntersection();
+        result.wrongLabel += int(hit.primitiveIndex) != expected.label ? 1 : 0;
+        result.worstDistance =
+            std::max(result.worstDistance, (hit.getWorldIntersectPoint() - expected.point).length());
+        const double cosine = hit.getWorldIntersectNormal() * expected.normal;
+        result.worstNormalCosine = std::min(result.worstNormalCosine, cosine);
+    }
     return result;
 }
 

@@ -101,6 +101,20 @@ struct CoverageComparison
 /** Every pixel centre of frame against truth's ray through it; depth errors over size. */
 CoverageComparison compareCoveredCentres(const Frame& frame, const AnalyticScene& truth, double size);
 
+/** Picks along 400 rays through a scene (a 20 x 20 grid from y = -10 toward +y, slightly tilted)
+ * against the truth's nearest hits: rays whose hit or miss disagrees, hits on another glyph, the
+ * farthest point and the least aligned normal. */
+struct PickingAgreement
+{
+    int hits = 0;
+    int wrongHit = 0;
+    int wrongLabel = 0;
+    double worstDistance = 0.0;
+    double worstNormalCosine = 1.0;
+};
+
+PickingAgreement comparePicksWithTruth(osg::Node& scene, const AnalyticScene& truth);
+
 osg::ref_ptr<osg::LightSource> createColouredLight();
 
 /** A directional osg::Light (position w = 0, in world coordinates, under no transform) as the glyph
