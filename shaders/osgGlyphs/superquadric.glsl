@@ -29,15 +29,16 @@ float superquadricNorm(vec3 p, vec2 exponents, out vec3 gradient)
     a = max(a / largest, vec3(1e-20));
     float q = 2.0 / exponents.y, s = 2.0 / exponents.x;
     float xq = pow(a.x, q), yq = pow(a.y, q);
-    float rq = xq + yq;              // rho^q
-    float rho = pow(rq, 1.0 / q);    // the L^q norm of (x, y)
-    float rs = pow(rho, s), zs = pow(a.z, s);
-    float ns = rs + zs;              // N^s, at least 1 here
+    float rq = xq + yq;        // rho^q, rho the L^q norm of (x, y)
+    float rs = pow(rq, s / q); // rho^s
+    float zs = pow(a.z, s);
+    float ns = rs + zs; // N^s, at least 1 here
     float n = pow(ns, 1.0 / s);
-    // dN/dz = N^(1-s) z^(s-1); dN/dx = N^(1-s) rho^(s-1) rho^(1-q) x^(q-1); powers as quotients.
+    // dN/dz = N^(1-s) z^(s-1); dN/dx = N^(1-s) rho^(s-q) x^(q-1), which goes to 0 with rho (s >= 1);
+    // powers as quotients.
     float outer = n / ns;
-    float dRho = outer * rs / rho;
-    gradient = sign(p) * vec3(dRho * rho / rq * xq / a.x, dRho * rho / rq * yq / a.y, outer * zs / a.z);
+    float across = rq > 0.0 ? outer * rs / rq : 0.0;
+    gradient = sign(p) * vec3(across * xq / a.x, across * yq / a.y, outer * zs / a.z);
     return largest * n;
 }
 

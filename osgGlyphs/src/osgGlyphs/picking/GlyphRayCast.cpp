@@ -68,10 +68,10 @@ double superquadricNorm(const dvec3& p, const glm::dvec2& exponents, dvec3& grad
     a = glm::max(a / largest, dvec3(1e-20));
     const double q = 2.0 / exponents.y, s = 2.0 / exponents.x;
     const double xq = std::pow(a.x, q), yq = std::pow(a.y, q), rq = xq + yq;
-    const double rho = std::pow(rq, 1.0 / q), rs = std::pow(rho, s), zs = std::pow(a.z, s);
+    const double rs = std::pow(rq, s / q), zs = std::pow(a.z, s);
     const double ns = rs + zs, n = std::pow(ns, 1.0 / s);
-    const double outer = n / ns, dRho = outer * rs / rho;
-    gradient = glm::sign(p) * dvec3(dRho * rho / rq * xq / a.x, dRho * rho / rq * yq / a.y, outer * zs / a.z);
+    const double outer = n / ns, across = rq > 0.0 ? outer * rs / rq : 0.0;
+    gradient = glm::sign(p) * dvec3(across * xq / a.x, across * yq / a.y, outer * zs / a.z);
     return largest * n;
 }
 
