@@ -81,9 +81,11 @@ void expectWellFormed(const PointData& frame)
         ASSERT_LT(bond.second, frame.getNumPoints()) << k;
         EXPECT_EQ(bond.image[0] | bond.image[1] | bond.image[2], 0) << k;
         if (k > 0)
+        {
             ASSERT_TRUE(std::make_pair(bonds[k - 1].first, bonds[k - 1].second) <
                         std::make_pair(bond.first, bond.second))
                 << k;
+        }
     }
 }
 

@@ -252,9 +252,9 @@ TEST_P(Superquadrics, LitColourFollowsTheAnalyticNormal)
 }
 
 INSTANTIATE_TEST_SUITE_P(, Superquadrics, ::testing::Values("geometry-shader", "point-sprite", "instanced"),
-                         [](const ::testing::TestParamInfo<const char*>& info)
+                         [](const ::testing::TestParamInfo<const char*>& technique)
                          {
-                             std::string name = info.param;
+                             std::string name = technique.param;
                              name.erase(std::remove(name.begin(), name.end(), '-'), name.end());
                              return name;
                          });

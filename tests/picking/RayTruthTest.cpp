@@ -82,7 +82,8 @@ RandomGlyphs createRandomGlyphs(GlyphShape shape, const Configuration& configura
         case GlyphShape::Arrow:
             glyphs.solids.push_back(Solid::arrow(tail, axis, length, r, headLength, headRadius));
             break;
-        case GlyphShape::Ellipsoid: // picked against their truth in EllipsoidGlyphTest
+        case GlyphShape::Ellipsoid:    // picked against their truth in EllipsoidGlyphTest
+        case GlyphShape::Superquadric: // and SuperquadricGlyphTest
             break;
         }
         glyphs.reach.push_back(shape == GlyphShape::Sphere ? r : length + r * headRadius);

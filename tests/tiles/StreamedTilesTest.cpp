@@ -158,6 +158,8 @@ INSTANTIATE_TEST_SUITE_P(Datasets, TilesLargerThanMemory,
                          ::testing::Values(Dataset{osgGlyphs::GlyphShape::Sphere, false, "spheres"},
                                            Dataset{osgGlyphs::GlyphShape::Arrow, false, "arrows"},
                                            Dataset{osgGlyphs::GlyphShape::Sphere, true, "rgba"},
+                                           Dataset{osgGlyphs::GlyphShape::Superquadric, false,
+                                                   "superquadrics"},
                                            Dataset{osgGlyphs::GlyphShape::Cone, false, "clustered", true}),
                          [](const ::testing::TestParamInfo<Dataset>& instance)
                          { return std::string(instance.param.name); });

@@ -367,7 +367,9 @@ TEST(CorruptTiles, AreRefusedWithOneErrorAndTheRestDraws)
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, PagedTiles,
-                         ::testing::Values(osgGlyphs::GlyphShape::Sphere, osgGlyphs::GlyphShape::Cone),
+                         ::testing::Values(osgGlyphs::GlyphShape::Sphere, osgGlyphs::GlyphShape::Cone,
+                                           osgGlyphs::GlyphShape::Ellipsoid,
+                                           osgGlyphs::GlyphShape::Superquadric),
                          [](const ::testing::TestParamInfo<osgGlyphs::GlyphShape>& shape)
                          { return std::string(osgGlyphs::getShapeName(shape.param)); });
 
@@ -376,9 +378,10 @@ const unsigned int COARSE_TEST_GLYPHS = 100000;
 /** The root tile's representatives against every glyph, seen from where the root gives way to
  * its children (its bounding sphere spans refineAt pixels): coverage and mean colour agree. */
 void expectCoarseLevelLooksLikeTheFineOne(float radius, const std::string& name, double coverageTolerance,
-                                          double colorTolerance)
+                                          double colorTolerance,
+                                          osgGlyphs::GlyphShape shape = osgGlyphs::GlyphShape::Sphere)
 {
-    osg::ref_ptr<GlyphCloud> cloud = randomCloud(COARSE_TEST_GLYPHS, radius, osgGlyphs::GlyphShape::Sphere);
+    osg::ref_ptr<GlyphCloud> cloud = randomCloud(COARSE_TEST_GLYPHS, radius, shape);
     osgGlyphsTiles::TileOptions options;
     options.maxGlyphsPerTile = 4096;
     osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder = new osgGlyphsTiles::TileBuilder(*cloud, options);
@@ -430,20 +433,45 @@ TEST(CoarseTiles, SparseDataKeepsCoverageAndMeanColour)
                                          "tiles_coarse_sparse", 0.05, 6.0);
 }
 
+// Random ellipsoids (semi-axes of 1 and 0.25 to 1 of their radius, turned at random) and
+// superquadrics (exponents 0.1 to 1 as well): each representative keeps its glyph's shape and turn,
+// grown to the coverage of its cell.
+TEST(CoarseTiles, DenseEllipsoidsKeepCoverageAndMeanColour)
+{
+    expectCoarseLevelLooksLikeTheFineOne(0.4f * std::cbrt(1.0f / COARSE_TEST_GLYPHS),
+                                         "tiles_coarse_ellipsoids", 0.05, 6.0,
+                                         osgGlyphs::GlyphShape::Ellipsoid);
+}
+
+TEST(CoarseTiles, SparseSuperquadricsKeepCoverageAndMeanColour)
+{
+    expectCoarseLevelLooksLikeTheFineOne(osgGlyphsData::getDefaultRandomRadius(COARSE_TEST_GLYPHS),
+                                         "tiles_coarse_superquadrics", 0.05, 6.0,
+                                         osgGlyphs::GlyphShape::Superquadric);
+}
+
 } // namespace
 
-// Tiles do not carry ellipsoids' semi-axes and turns yet: a builder refuses them in one message,
-// rather than writing tiles that draw nothing.
-TEST(TileArchives, RefuseEllipsoidsInOneMessage)
+// A builder refuses an ellipsoid it could not draw in one message naming the glyph.
+TEST(TileArchives, RefuseEllipsoidsWithoutASizeOrATurn)
 {
-    osg::ref_ptr<GlyphCloud> cloud = randomCloud(100, 0.01f, osgGlyphs::GlyphShape::Sphere);
-    osg::ref_ptr<osg::Vec3Array> semiAxes = new osg::Vec3Array;
-    semiAxes->assign(100, osg::Vec3(0.02f, 0.01f, 0.01f));
-    cloud->setSemiAxes(semiAxes.get());
-    cloud->setShape(osgGlyphs::GlyphShape::Ellipsoid);
+    osg::ref_ptr<GlyphCloud> cloud = randomCloud(100, 0.01f, osgGlyphs::GlyphShape::Ellipsoid);
     osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder = new osgGlyphsTiles::TileBuilder(*cloud);
     std::string error;
+    osg::ref_ptr<osg::Vec3Array> semiAxes = new osg::Vec3Array(*cloud->getSemiAxes());
+    (*semiAxes)[7].y() = 0.0f;
+    cloud->setSemiAxes(semiAxes.get());
     EXPECT_FALSE(builder->addGlyphs(*cloud, error));
-    EXPECT_EQ(error,
-              "tiles do not hold ellipsoids yet (their semi-axes and turns): choose another glyph shape");
+    EXPECT_EQ(error, "glyph 7 has semi-axes or exponents that are not finite and > 0");
+    (*semiAxes)[7].y() = 0.01f;
+    osg::ref_ptr<osg::Vec4Array> orientations = new osg::Vec4Array;
+    orientations->assign(100, osg::Vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    (*orientations)[42] = osg::Vec4(NAN, 0.0f, 0.0f, 1.0f);
+    cloud->setOrientations(orientations.get());
+    EXPECT_FALSE(builder->addGlyphs(*cloud, error));
+    EXPECT_EQ(error, "glyph 42 has a turn (quaternion) that is zero or not finite");
+    cloud->setOrientations(new osg::Vec4Array(99));
+    EXPECT_FALSE(builder->addGlyphs(*cloud, error));
+    EXPECT_EQ(error, "the glyphs' arrays are shorter than their positions");
+    EXPECT_EQ(builder->getNumGlyphs(), 0u);
 }

@@ -124,6 +124,11 @@ TileBuilder::TileBuilder(const GlyphCloud& style, const TileOptions& options)
     else if (_style->getColorMode() == GlyphColorMode::RGBA)
         _style->setColors(new osg::Vec4ubArray);
     _style->setVectors(!osgGlyphs::isVectorShape(_style->getShape()) ? nullptr : new osg::Vec3Array);
+    const bool axes = osgGlyphs::isAxesShape(_style->getShape());
+    _style->setSemiAxes(axes ? new osg::Vec3Array : nullptr);
+    _style->setOrientations(axes ? new osg::Vec4Array : nullptr);
+    _style->setExponents(_style->getShape() == osgGlyphs::GlyphShape::Superquadric ? new osg::Vec2Array
+                                                                                   : nullptr);
     _style->setSelection({});
     _style->setOcclusion(nullptr);
     _style->setCulling(osgGlyphs::GlyphCulling::Occlusion); // the default, whatever the style's
@@ -158,11 +163,23 @@ bool TileBuilder::addGlyphs(const GlyphCloud& cloud, std::string& error)
     const osg::FloatArray* scalars = cloud.getScalars();
     const osg::Vec4ubArray* colors = cloud.getColors();
     const osg::Vec3Array* vectorArray = cloud.getVectors();
-    if (osgGlyphs::isAxesShape(_style->getShape()))
+    const bool axes = osgGlyphs::isAxesShape(_style->getShape());
+    const bool superquadrics = _style->getShape() == osgGlyphs::GlyphShape::Superquadric;
+    const osg::Vec3Array* semiAxes = cloud.getSemiAxes();
+    const osg::Vec4Array* orientations = cloud.getOrientations();
+    const osg::Vec2Array* exponents = superquadrics ? cloud.getExponents() : nullptr;
+    // Ellipsoids and superquadrics keep a turn each, exponents each for superquadrics: the cloud's
+    // defaults where it has none.
+    const auto orientationOf = [orientations](std::size_t i)
+    { return orientations ? (*orientations)[i] : osg::Vec4(0.0f, 0.0f, 0.0f, 1.0f); };
+    const auto exponentsOf = [exponents](std::size_t i)
+    { return exponents ? (*exponents)[i] : osg::Vec2(1.0f, 1.0f); };
+    const auto radiusOf = [&](std::size_t i)
     {
-        error = "tiles do not hold ellipsoids yet (their semi-axes and turns): choose another glyph shape";
-        return false;
-    }
+        if (axes)
+            return GlyphCloud::getAxesShapeRadius((*semiAxes)[i], exponentsOf(i));
+        return radii ? (*radii)[i] : cloud.getRadius();
+    };
     if (cloud.getColorMode() != mode)
     {
         error = "the glyphs' colours are not of the kind of the tiles' style";
@@ -171,7 +188,9 @@ bool TileBuilder::addGlyphs(const GlyphCloud& cloud, std::string& error)
     if ((radii && radii->size() < count) ||
         (mode == GlyphColorMode::Scalar && (!scalars || scalars->size() < count)) ||
         (mode == GlyphColorMode::RGBA && (!colors || colors->size() < count)) ||
-        (vectors && (!vectorArray || vectorArray->size() < count)))
+        (vectors && (!vectorArray || vectorArray->size() < count)) ||
+        (axes && (!semiAxes || semiAxes->size() < count || (orientations && orientations->size() < count))) ||
+        (exponents && exponents->size() < count))
     {
         error = "the glyphs' arrays are shorter than their positions";
         return false;
@@ -180,11 +199,15 @@ bool TileBuilder::addGlyphs(const GlyphCloud& cloud, std::string& error)
     const osg::Vec3d shift = cloud.getOrigin() - glyphs.origin;
     for (std::size_t i = 0; i < count; ++i)
     {
-        const float radius = radii ? (*radii)[i] : cloud.getRadius();
+        const float radius = radiusOf(i);
         const char* wrong = nullptr;
         if (!(*positions)[i].valid() || !std::isfinite(radius) || radius < 0.0f ||
             (vectors && !(*vectorArray)[i].valid()))
             wrong = " has a non-finite position, radius or vector";
+        else if (axes && !(radius > 0.0f))
+            wrong = " has semi-axes or exponents that are not finite and > 0";
+        else if (axes && !(orientationOf(i).length() > 0.0f && orientationOf(i).valid()))
+            wrong = " has a turn (quaternion) that is zero or not finite";
         else if (_bounds.valid() &&
                  !_bounds.contains(osg::Vec3d(osg::Vec3f(osg::Vec3d((*positions)[i]) + shift))))
             wrong = " lies outside the bounds given to the tile builder";
@@ -203,8 +226,15 @@ bool TileBuilder::addGlyphs(const GlyphCloud& cloud, std::string& error)
         for (std::size_t i = begin; i < end; ++i)
         {
             glyphs.positions.push_back(osg::Vec3f(osg::Vec3d((*positions)[i]) + shift));
-            glyphs.radii.push_back(radii ? (*radii)[i] : cloud.getRadius());
+            glyphs.radii.push_back(radiusOf(i));
             _box.expandBy(osg::Vec3d(glyphs.positions.back()));
+        }
+        for (std::size_t i = begin; axes && i < end; ++i)
+        {
+            glyphs.semiAxes.push_back((*semiAxes)[i]);
+            glyphs.orientations.push_back(orientationOf(i));
+            if (superquadrics)
+                glyphs.exponents.push_back(exponentsOf(i));
         }
         if (mode == GlyphColorMode::Scalar)
             for (std::size_t i = begin; i < end; ++i)
@@ -267,11 +297,7 @@ bool TileBuilder::spill(std::string& error)
     if (!_spilling)
         _spilling.reset(new TileGlyphs);
     TileGlyphs& batch = *_spilling;
-    batch.positions.swap(_glyphs->positions);
-    batch.radii.swap(_glyphs->radii);
-    batch.scalars.swap(_glyphs->scalars);
-    batch.colors.swap(_glyphs->colors);
-    batch.vectors.swap(_glyphs->vectors);
+    batch.swapGlyphs(*_glyphs);
     _glyphs->clear();
     _spilled = std::async(std::launch::async,
                           [this] { return _buckets->add(*_spilling, 0, _spilling->size(), _spillError); });

@@ -8,6 +8,7 @@
 #include <osgDB/Registry>
 
 #include <cstdio>
+#include <vector>
 
 using namespace osgGlyphsTiles;
 
@@ -37,11 +38,13 @@ public:
         osg::ref_ptr<const osg::Vec3Array> positions = cloud->getPositions();
         if (cloud->getCompressedPositions())
             positions = cloud->computeDrawnPositions();
-        for (const osg::Array* array : {static_cast<const osg::Array*>(positions.get()),
-                                        static_cast<const osg::Array*>(cloud->getRadii()),
-                                        static_cast<const osg::Array*>(cloud->getScalars()),
-                                        static_cast<const osg::Array*>(cloud->getColors()),
-                                        static_cast<const osg::Array*>(cloud->getVectors())})
+        std::vector<const osg::Array*> arrays = {positions.get(), cloud->getRadii(), cloud->getScalars(),
+                                                 cloud->getColors(), cloud->getVectors()};
+        // Only theirs: the checksums of archives of other shapes stay as they were.
+        if (osgGlyphs::isAxesShape(cloud->getShape()))
+            arrays.insert(arrays.end(),
+                          {cloud->getSemiAxes(), cloud->getOrientations(), cloud->getExponents()});
+        for (const osg::Array* array : arrays)
         {
             const uint64_t size = array ? array->getTotalDataSize() : 0;
             add(&size, sizeof(size));

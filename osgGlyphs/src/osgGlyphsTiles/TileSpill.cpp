@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <type_traits>
 
 using namespace osgGlyphsTiles::detail;
 
@@ -27,16 +28,21 @@ const unsigned char* take(const unsigned char* from, T& value)
 
 }
 
-TileRecordFormat::TileRecordFormat(bool scalars, bool colors, bool vectors)
-    : _scalars(scalars), _colors(colors), _vectors(vectors),
-      _size(sizeof(osg::Vec3f) + sizeof(float) + (scalars ? sizeof(float) : 0) +
-            (colors ? sizeof(osg::Vec4ub) : 0) + (vectors ? sizeof(osg::Vec3f) : 0))
-{
-}
-
 TileRecordFormat::TileRecordFormat(const TileGlyphs& like)
-    : TileRecordFormat(!like.scalars.empty(), !like.colors.empty(), !like.vectors.empty())
 {
+    unsigned int index = 0;
+    TileGlyphs::forEachArray(
+        [this, &index](const auto& values)
+        {
+            // Every record has a position and a radius.
+            if (index < 2 || !values.empty())
+            {
+                _used |= 1u << index;
+                _size += sizeof(typename std::decay_t<decltype(values)>::value_type);
+            }
+            ++index;
+        },
+        like);
 }
 
 void TileRecordFormat::pack(const TileGlyphs& glyphs, std::size_t i, unsigned char* record) const

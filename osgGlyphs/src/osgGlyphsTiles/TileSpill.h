@@ -16,12 +16,11 @@ namespace osgGlyphsTiles
 namespace detail
 {
 
-/** The bytes of one glyph in a temporary file: its position and radius, then its scalar, colour
- * and vector where the dataset has them. */
+/** The bytes of one glyph in a temporary file: its position and radius, then a value of each
+ * other array the dataset uses (scalar, colour, vector, semi-axes, turn, exponents). */
 class TileRecordFormat
 {
 public:
-    TileRecordFormat(bool scalars, bool colors, bool vectors);
     /** The records of glyphs like these. */
     explicit TileRecordFormat(const TileGlyphs& like);
 
@@ -38,18 +37,18 @@ private:
     template <typename Glyphs, typename Visit>
     void forEachArray(Glyphs& glyphs, const Visit& visit) const
     {
-        visit(glyphs.positions);
-        visit(glyphs.radii);
-        if (_scalars)
-            visit(glyphs.scalars);
-        if (_colors)
-            visit(glyphs.colors);
-        if (_vectors)
-            visit(glyphs.vectors);
+        unsigned int index = 0;
+        TileGlyphs::forEachArray(
+            [&](auto& values)
+            {
+                if (_used >> index++ & 1u)
+                    visit(values);
+            },
+            glyphs);
     }
 
-    bool _scalars, _colors, _vectors;
-    std::size_t _size;
+    unsigned int _used = 0; // a bit for each array, in the order of TileGlyphs::forEachArray
+    std::size_t _size = 0;
 };
 
 /** Glyph records appended to a temporary file that the spill deletes. */

@@ -48,53 +48,35 @@ const std::size_t PARALLEL_TILES = 2;
 
 void TileGlyphs::clear()
 {
-    positions.clear();
-    radii.clear();
-    scalars.clear();
-    colors.clear();
-    vectors.clear();
+    forEachArray([](auto& values) { values.clear(); }, *this);
 }
 
 void TileGlyphs::release()
 {
-    positions = {};
-    radii = {};
-    scalars = {};
-    colors = {};
-    vectors = {};
-}
-
-void TileGlyphs::reserve(std::size_t count, const TileGlyphs& like)
-{
-    positions.reserve(count);
-    radii.reserve(count);
-    if (!like.scalars.empty())
-        scalars.reserve(count);
-    if (!like.colors.empty())
-        colors.reserve(count);
-    if (!like.vectors.empty())
-        vectors.reserve(count);
+    forEachArray([](auto& values) { values = {}; }, *this);
 }
 
 void TileGlyphs::append(const TileGlyphs& other, std::size_t i)
 {
-    positions.push_back(other.positions[i]);
-    radii.push_back(other.radii[i]);
-    if (!other.scalars.empty())
-        scalars.push_back(other.scalars[i]);
-    if (!other.colors.empty())
-        colors.push_back(other.colors[i]);
-    if (!other.vectors.empty())
-        vectors.push_back(other.vectors[i]);
+    forEachArray(
+        [i](auto& values, const auto& others)
+        {
+            if (!others.empty())
+                values.push_back(others[i]);
+        },
+        *this, other);
 }
 
 void TileGlyphs::append(const TileGlyphs& other)
 {
-    positions.insert(positions.end(), other.positions.begin(), other.positions.end());
-    radii.insert(radii.end(), other.radii.begin(), other.radii.end());
-    scalars.insert(scalars.end(), other.scalars.begin(), other.scalars.end());
-    colors.insert(colors.end(), other.colors.begin(), other.colors.end());
-    vectors.insert(vectors.end(), other.vectors.begin(), other.vectors.end());
+    forEachArray([](auto& values, const auto& others)
+                 { values.insert(values.end(), others.begin(), others.end()); },
+                 *this, other);
+}
+
+void TileGlyphs::swapGlyphs(TileGlyphs& other)
+{
+    forEachArray([](auto& values, auto& others) { values.swap(others); }, *this, other);
 }
 
 TileWriter::TileWriter(const GlyphCloud& style, const TileOptions& options, const OctreeCube& cube,
@@ -195,7 +177,16 @@ osg::ref_ptr<GlyphCloud> TileWriter::createCloud(const TileGlyphs& glyphs) const
     cloud->setCompressedPositions(_options.compressedPositions);
     // The positions last: the cloud is consistent after each call.
     cloud->setPositions(new osg::Vec3Array);
-    if (std::all_of(radii.begin(), radii.end(), [&](float r) { return r == radii.front(); }))
+    if (!glyphs.semiAxes.empty())
+    {
+        // Ellipsoids' and superquadrics' radii follow from their semi-axes (and exponents).
+        cloud->setRadii(nullptr);
+        cloud->setSemiAxes(new osg::Vec3Array(glyphs.semiAxes.begin(), glyphs.semiAxes.end()));
+        cloud->setOrientations(new osg::Vec4Array(glyphs.orientations.begin(), glyphs.orientations.end()));
+        if (!glyphs.exponents.empty())
+            cloud->setExponents(new osg::Vec2Array(glyphs.exponents.begin(), glyphs.exponents.end()));
+    }
+    else if (std::all_of(radii.begin(), radii.end(), [&](float r) { return r == radii.front(); }))
     {
         cloud->setRadii(nullptr);
         cloud->setRadius(radii.empty() ? _style.getRadius() : radii.front());
@@ -290,12 +281,15 @@ TileTree::TileTree(TileGlyphs& glyphs, TileWriter& writer, std::vector<std::size
         {
             reorder(glyphs.positions);
             reorder(glyphs.colors);
+            reorder(glyphs.orientations);
         },
         [&]
         {
             reorder(glyphs.radii);
             reorder(glyphs.scalars);
             reorder(glyphs.vectors);
+            reorder(glyphs.semiAxes);
+            reorder(glyphs.exponents);
         });
 }
 
@@ -379,19 +373,29 @@ osg::BoundingBoxd TileTree::boxOf(std::size_t begin, std::size_t end) const
     return box;
 }
 
+float TileTree::coveringRadius(std::size_t i) const
+{
+    if (_glyphs.semiAxes.empty())
+        return _glyphs.radii[i];
+    // The disc of an ellipsoid's mean projected area, a quarter of its surface (Cauchy), by Knud
+    // Thomsen's approximation of the surface (within 1.1%).
+    const double p = 1.6075;
+    const osg::Vec3f& a = _glyphs.semiAxes[i];
+    const double x = std::pow(double(a.x()), p), y = std::pow(double(a.y()), p),
+                 z = std::pow(double(a.z()), p);
+    return static_cast<float>(std::pow((x * y + x * z + y * z) / 3.0, 0.5 / p));
+}
+
 osg::ref_ptr<GlyphCloud> TileTree::createLeaf(std::size_t begin, std::size_t end) const
 {
-    const auto range = [begin, end](const auto& values)
-    {
-        using Values = std::remove_const_t<std::remove_reference_t<decltype(values)>>;
-        return values.empty() ? Values() : Values(values.begin() + begin, values.begin() + end);
-    };
     TileGlyphs leaf;
-    leaf.positions = range(_glyphs.positions);
-    leaf.radii = range(_glyphs.radii);
-    leaf.scalars = range(_glyphs.scalars);
-    leaf.colors = range(_glyphs.colors);
-    leaf.vectors = range(_glyphs.vectors);
+    TileGlyphs::forEachArray(
+        [begin, end](auto& values, const auto& all)
+        {
+            if (!all.empty())
+                values.assign(all.begin() + begin, all.begin() + end);
+        },
+        leaf, _glyphs);
     return _writer.createCloud(leaf);
 }
 
@@ -407,7 +411,7 @@ void TileTree::addRepresentatives(unsigned int level, std::size_t begin, std::si
         std::size_t last = first;
         CellCoverage coverage;
         for (; last < end && _codes[last] >> shift == cell; ++last)
-            coverage.add(osg::Vec3d(_glyphs.positions[last]), _glyphs.radii[last]);
+            coverage.add(osg::Vec3d(_glyphs.positions[last]), coveringRadius(last));
         const osg::Vec3d centroid = coverage.getCentroid();
         std::size_t chosen = first;
         double nearest = DBL_MAX;
@@ -421,7 +425,16 @@ void TileTree::addRepresentatives(unsigned int level, std::size_t begin, std::si
             }
         }
         representatives.append(_glyphs, chosen);
-        representatives.radii.back() = coverage.getRadius(cellSize);
+        const float radius = coverage.getRadius(cellSize);
+        if (representatives.semiAxes.empty())
+            representatives.radii.back() = radius;
+        else
+        {
+            // Ellipsoids and superquadrics keep their shape and turn, grown to the cell's coverage.
+            const float scale = radius / coveringRadius(chosen);
+            representatives.radii.back() *= scale;
+            representatives.semiAxes.back() *= scale;
+        }
         first = last;
     }
 }

@@ -21,27 +21,45 @@ namespace osgGlyphsTiles
 namespace detail
 {
 
-/** Glyphs as arrays of equal length (colours and vectors where used). */
+/** Glyphs as arrays of equal length (colours, vectors, semi-axes, turns and exponents where used). */
 struct TileGlyphs
 {
     osg::Vec3d origin;
     std::vector<osg::Vec3f> positions; // relative to origin
-    std::vector<float> radii;
+    std::vector<float> radii;          // of ellipsoids and superquadrics: a sphere's that holds them
     std::vector<float> scalars;
     std::vector<osg::Vec4ub> colors;
     std::vector<osg::Vec3f> vectors;
+    std::vector<osg::Vec3f> semiAxes;
+    std::vector<osg::Vec4f> orientations;
+    std::vector<osg::Vec2f> exponents;
     float scalarMin = 0.0f, scalarMax = 0.0f;
+
+    /** Calls visit with each array of glyphs, positions first, side by side: visit(a.positions,
+     * b.positions, ...), then the radii, and so on (the unused ones empty). */
+    template <typename Visit, typename... Glyphs>
+    static void forEachArray(const Visit& visit, Glyphs&... glyphs)
+    {
+        visit(glyphs.positions...);
+        visit(glyphs.radii...);
+        visit(glyphs.scalars...);
+        visit(glyphs.colors...);
+        visit(glyphs.vectors...);
+        visit(glyphs.semiAxes...);
+        visit(glyphs.orientations...);
+        visit(glyphs.exponents...);
+    }
 
     std::size_t size() const { return positions.size(); }
     void clear();
     /** Clears the arrays and gives their memory back. */
     void release();
-    /** Makes room for count glyphs in the arrays that like uses. */
-    void reserve(std::size_t count, const TileGlyphs& like);
     /** Appends glyph i of other. */
     void append(const TileGlyphs& other, std::size_t i);
     /** Appends every glyph of other. */
     void append(const TileGlyphs& other);
+    /** Exchanges the glyphs (not the origin nor the scalar range) with other's. */
+    void swapGlyphs(TileGlyphs& other);
 };
 
 /** What every tile of a dataset shares (style, octree cube, origin, colour range) and where the
@@ -131,6 +149,9 @@ public:
     osg::BoundingBoxd boxOf(std::size_t begin, std::size_t end) const;
 
 private:
+    /** The radius of the disc whose area is glyph i's mean projected area (its radius for spheres,
+     * cones and arrows, which the tiles' coverage takes as theirs). */
+    float coveringRadius(std::size_t i) const;
     osg::ref_ptr<osgGlyphs::GlyphCloud> createLeaf(std::size_t begin, std::size_t end) const;
 
     const TileGlyphs& _glyphs;

@@ -469,6 +469,15 @@ void GlyphCloud::updateScalarMapping()
     _scalarToColormapUniform->set(mapping);
 }
 
+float GlyphCloud::getAxesShapeRadius(const osg::Vec3& semiAxes, const osg::Vec2& exponents)
+{
+    if (!areValidSemiAxes(semiAxes) || !areValidExponents(exponents))
+        return 0.0f;
+    const osg::Vec2 stored(float(toExponentByte(exponents.x())) / 127.0f,
+                           float(toExponentByte(exponents.y())) / 127.0f);
+    return std::max(semiAxes.x(), std::max(semiAxes.y(), semiAxes.z())) * superquadricBoundScale(stored);
+}
+
 void GlyphCloud::packEllipsoids()
 {
     const unsigned int count = hasEllipsoidShape() ? _numGlyphs : 0;
@@ -485,11 +494,7 @@ void GlyphCloud::packEllipsoids()
         // left hold its exponents.
         const unsigned int exponentBytes =
             hasSuperquadricShape() && valid ? (toExponentByte(e.x()) << 8) | toExponentByte(e.y()) : 0u;
-        const float bound = exponentBytes
-                                ? superquadricBoundScale(osg::Vec2(float(exponentBytes >> 8) / 127.0f,
-                                                                   float(exponentBytes & 255u) / 127.0f))
-                                : 1.0f;
-        const float largest = valid ? std::max(a.x(), std::max(a.y(), a.z())) * bound : 0.0f;
+        const float largest = valid ? getAxesShapeRadius(a, e) : 0.0f;
         (*_ellipsoidRadii)[i] = largest;
         (*_packedAxes)[i] =
             valid ? osg::Vec4us(toUnorm16(a.x() / largest), toUnorm16(a.y() / largest),
