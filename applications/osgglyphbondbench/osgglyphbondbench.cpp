@@ -3,11 +3,17 @@
 // average): open, in a periodic box, in a periodic triclinic box, with three types.
 //
 //   osgglyphbondbench [--atoms N] [--rounds R] [--neighbours K]
+//   osgglyphbondbench --render [--atoms N] [--frames F] [--size W H]
 //
 // Each case runs R rounds (after one that warms up) and prints the median time, the bonds found
 // and the ratio to copying the positions once (a std::vector copy of the same atoms): a baseline
 // that any pass over the atoms costs, whatever the machine. The CPU time (all threads) beside the
 // time says how much the machine's other work slowed the run.
+//
+// With --render it draws the atoms (dense: radius 0.4 x their mean spacing) alone and with about
+// two bonds each, and prints the frame times' ratio (BondRenderCost.h).
+
+#include "BondRenderCost.h"
 
 #include <osgGlyphsData/BondFinder>
 
@@ -66,21 +72,36 @@ int main(int argc, char** argv)
     std::size_t atoms = 1000000;
     int rounds = 5;
     double neighbours = 5.0;
+    bool render = false;
+    unsigned int frames = 10;
+    int width = 800, height = 600;
     for (int a = 1; a < argc; ++a)
     {
         const std::string arg = argv[a];
         if (arg == "--atoms" && a + 1 < argc)
             atoms = std::strtoull(argv[++a], nullptr, 10);
+        else if (arg == "--render")
+            render = true;
+        else if (arg == "--frames" && a + 1 < argc)
+            frames = static_cast<unsigned int>(std::max(1, std::atoi(argv[++a])));
+        else if (arg == "--size" && a + 2 < argc)
+        {
+            width = std::max(1, std::atoi(argv[++a]));
+            height = std::max(1, std::atoi(argv[++a]));
+        }
         else if (arg == "--rounds" && a + 1 < argc)
             rounds = std::max(1, std::atoi(argv[++a]));
         else if (arg == "--neighbours" && a + 1 < argc)
             neighbours = std::atof(argv[++a]);
         else
         {
-            std::cerr << "usage: osgglyphbondbench [--atoms N] [--rounds R] [--neighbours K]\n";
+            std::cerr << "usage: osgglyphbondbench [--atoms N] [--rounds R] [--neighbours K]\n"
+                         "       osgglyphbondbench --render [--atoms N] [--frames F] [--size W H]\n";
             return 2;
         }
     }
+    if (render)
+        return measureBondRenderCost(atoms, 2.0, frames, width, height);
 
     // A cutoff of 1.6 with `neighbours` atoms within it on average: the box's volume follows.
     const double cutoff = 1.6;
