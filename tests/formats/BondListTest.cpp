@@ -1,7 +1,8 @@
-/* The bonds files list (PointData::getBonds()): a LAMMPS data file's Bonds and the CONECT records of
- * the PDB that MDAnalysis wrote of it (tests/data/bonds, make_pdb.py), against the data file's own
- * Bonds lines read here; a LAMMPS dump given them by the data file as its topology, every bond the
- * length LAMMPS's harmonic bonds keep in every frame; shares; and files that lie. */
+/* The bonds files list (PointData::getBonds()): a LAMMPS data file's Bonds, the CONECT records of
+ * the PDB that MDAnalysis wrote of it (tests/data/bonds, make_pdb.py) and the bonds/group of the GSD
+ * the gsd package wrote of it (make_gsd.py), against the data file's own Bonds lines read here; a LAMMPS dump
+ * given them by the data file as its topology, every bond the length LAMMPS's harmonic bonds keep in every
+ * frame; shares; and files that lie. */
 
 #include "FormatTestData.h"
 
@@ -66,6 +67,16 @@ IdPairs bondsById(const PointData& frame)
                    b = static_cast<int64_t>((*ids)[bond.second]);
         pairs.emplace(std::min(a, b), std::max(a, b));
     }
+    return pairs;
+}
+
+/** A frame's bonds by the ids of their atoms, where atom id i + 1 is the frame's point i (a GSD
+ * written from a dump sorted by id). */
+IdPairs bondsByIndex(const PointData& frame)
+{
+    IdPairs pairs;
+    for (const Bond& bond : *frame.getBonds())
+        pairs.emplace(int64_t(bond.first) + 1, int64_t(bond.second) + 1);
     return pairs;
 }
 
@@ -167,6 +178,43 @@ TEST(BondList, ATopologyGivesEveryFrameOfADumpItsBonds)
         // One list for every frame: its memory does not grow with the frames.
         EXPECT_EQ(frame->getBonds().get(), first->getBonds().get());
     }
+}
+
+// Frames 1 to 4 of the GSD hold no bonds chunks: they take frame 0's, as GSD's readers do.
+TEST(BondList, AGsdFileListsItsBondsInEveryFrame)
+{
+    osg::ref_ptr<FrameSource> gsd = openFrames(bondData("polymer.gsd"));
+    ASSERT_TRUE(gsd);
+    ASSERT_EQ(gsd->getNumFrames(), 5u);
+    const IdPairs truth = bondsOfDataFile(bondData("polymer.data"));
+    osg::ref_ptr<PointData> first = frameOf(*gsd, 0);
+    ASSERT_TRUE(first && first->getBonds());
+    for (std::size_t index : {0u, 4u, 2u})
+    {
+        SCOPED_TRACE("frame " + std::to_string(index));
+        osg::ref_ptr<PointData> frame = frameOf(*gsd, index);
+        ASSERT_TRUE(frame && frame->getBonds());
+        expectWellFormed(*frame);
+        EXPECT_EQ(bondsByIndex(*frame), truth);
+        expectBondedLengths(*frame);
+        EXPECT_EQ(frame->getBonds().get(), first->getBonds().get());
+    }
+    // A share holds the bonds between its own particles, by its own indices.
+    FrameSourceOptions options;
+    options.share = {2, 5};
+    osg::ref_ptr<PointData> part = frameOf(*openFrames(bondData("polymer.gsd"), options), 3);
+    ASSERT_TRUE(part && part->getBonds());
+    const PointRange range = getShareRange(options.share, 192);
+    IdPairs own, inShare;
+    for (const auto& [a, b] : truth)
+        if (uint64_t(a - 1) >= range.begin && uint64_t(b - 1) < range.end)
+            own.emplace(a, b);
+    for (const Bond& bond : *part->getBonds())
+        inShare.emplace(int64_t(range.begin + bond.first) + 1, int64_t(range.begin + bond.second) + 1);
+    EXPECT_GT(own.size(), 0u);
+    EXPECT_EQ(inShare, own);
+    // A GSD without bonds lists none.
+    EXPECT_FALSE(frameOf(*openFrames(dataPath("gsd/melt.gsd")), 0)->getBonds());
 }
 
 TEST(BondList, SharesHoldTheBondsBetweenTheirOwnAtoms)

@@ -415,3 +415,38 @@ TEST(Gsd, FilesThatLieFailNamingTheFileFrameAndByte)
         EXPECT_EQ(error.find('\n'), std::string::npos) << error;
     }
 }
+
+// The bonds of the GSD the gsd package wrote of the polymer (tests/data/bonds/make_gsd.py), lying.
+TEST(Gsd, BondsThatLieFailNamingTheFileFrameAndByte)
+{
+    const std::string good = readBytes(dataPath("../bonds/polymer.gsd"));
+    const std::vector<Entry> index = readIndex(good);
+    const Entry group = findEntry(index, 0, "bonds/group");
+    const Entry count = findEntry(index, 0, "bonds/N");
+    ASSERT_EQ(group.rows, 180u);
+    const std::size_t bond5 = std::size_t(group.location) + 2 * 5 * 4;
+    const struct
+    {
+        std::string name, bytes, expected;
+    } cases[] = {
+        {"past the particles", withValue<int32_t>(good, bond5 + 4, 192),
+         "frame 0: byte " + std::to_string(bond5) +
+             ": bonds/group: bond 5 joins particle 192, not one of the frame's 192 (particles/N)"},
+        {"negative", withValue<int32_t>(good, bond5, -3), "bond 5 joins particle -3"},
+        {"to itself", withValue<int32_t>(good, bond5 + 4, valueAt<int32_t>(good, bond5)),
+         "byte " + std::to_string(bond5) + ": bonds/group: bond 5 joins particle " +
+             std::to_string(valueAt<int32_t>(good, bond5)) + " to itself"},
+        {"N lies", withValue<uint32_t>(good, std::size_t(count.location), 181),
+         "frame 0: byte " + std::to_string(group.at) +
+             ": bonds/group holds 180 x 2 int32 values, not 181 x 2 particle indices"},
+    };
+    for (const auto& bad : cases)
+    {
+        SCOPED_TRACE(bad.name);
+        const std::string path = writeScratchFile("bad_bonds.gsd", bad.bytes);
+        const std::string error = firstError(path);
+        EXPECT_NE(error.find(path), std::string::npos) << error;
+        EXPECT_NE(error.find(bad.expected), std::string::npos) << error;
+        EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+    }
+}

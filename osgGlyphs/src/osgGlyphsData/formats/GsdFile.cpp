@@ -12,10 +12,12 @@
 //
 // The hoomd schema (1.x): configuration/step and /box; particles/N, types, typeid, position,
 // velocity, orientation, angmom, image, mass, charge, diameter, body and moment_inertia become
-// columns (typeid with types as the categorical column "species"); type_shapes, bonds and other
-// groups, state/ and log/ are not read. A frame that omits a chunk takes frame 0's (for a
-// per-particle chunk, only when frame 0 has as many particles), else the schema's default.
+// columns (typeid with types as the categorical column "species"); bonds/N and bonds/group are the
+// frame's bond list (PointData::getBonds()); type_shapes, the other groups, state/ and log/ are not
+// read. A frame that omits a chunk takes frame 0's (for a per-particle chunk, only when frame 0 has
+// as many particles), else the schema's default.
 
+#include "../ListedBonds.h"
 #include "../readers/Fields.h"
 #include "BinaryFile.h"
 #include "FormatFrameFile.h"
@@ -26,6 +28,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <type_traits>
 #include <unordered_map>
 
@@ -352,6 +355,8 @@ private:
         _typesId = idOf("particles/types");
         _typeIdId = idOf("particles/typeid");
         _positionId = idOf(POSITION.chunk);
+        _bondCountId = idOf("bonds/N");
+        _bondGroupId = idOf("bonds/group");
         std::vector<bool> used(_names.size(), false);
         for (const Chunk& chunk : _chunks)
             used[chunk.name] = true;
@@ -699,6 +704,73 @@ private:
         data.setBox(osg::BoundingBoxd(corner, corner + lengths), tilt);
     }
 
+    /** The frame's bonds/group (or frame 0's) as particle index pairs, checked against the frame's
+     * particles and bonds/N. */
+    std::vector<std::pair<uint32_t, uint32_t>> readBondGroup(const Chunk& group, std::size_t frame,
+                                                             const FilePlace& place) const
+    {
+        const Chunk* count = persistent(frame, _bondCountId);
+        const uint64_t bonds = count ? readInteger(*count, place) : 0;
+        const std::string name = std::string("bonds/group") + (group.frame != frame ? " of frame 0" : "");
+        if (!isInteger(group.type) || group.columns != 2 || group.rows != bonds)
+            place.fail(group.entryAt, name + " holds " + std::to_string(group.rows) + " x " +
+                                          std::to_string(group.columns) + " " + typeName(group.type) +
+                                          " values, not " + std::to_string(bonds) +
+                                          " x 2 particle indices for the frame's bonds (bonds/N)");
+        // The chunk lies within the file: its values are at most the file's bytes.
+        std::vector<int64_t> indices(static_cast<std::size_t>(2 * bonds));
+        load(group, 0, indices.size(), indices.data(), place);
+        std::vector<std::pair<uint32_t, uint32_t>> rows(static_cast<std::size_t>(bonds));
+        for (std::size_t k = 0; k < rows.size(); ++k)
+        {
+            const int64_t a = indices[2 * k], b = indices[2 * k + 1];
+            const uint64_t at = group.location + 2 * k * typeSize(group.type);
+            for (int64_t particle : {a, b})
+                if (particle < 0 || uint64_t(particle) >= _points[frame])
+                    place.fail(at, name + ": bond " + std::to_string(k) + " joins particle " +
+                                       std::to_string(particle) + ", not one of the frame's " +
+                                       std::to_string(_points[frame]) + " (particles/N)");
+            if (a == b)
+                place.fail(at, name + ": bond " + std::to_string(k) + " joins particle " + std::to_string(a) +
+                                   " to itself");
+            rows[k] = {static_cast<uint32_t>(a), static_cast<uint32_t>(b)};
+        }
+        return rows;
+    }
+
+    /** The frame's bonds: one list for every whole frame that shares a bonds/group chunk. */
+    void addBonds(PointData& data, std::size_t frame, const PointRange& range, const FilePlace& place) const
+    {
+        const Chunk* group = persistent(frame, _bondGroupId);
+        if (!group)
+        {
+            const Chunk* count = persistent(frame, _bondCountId);
+            if (count && readInteger(*count, place) > 0)
+                place.fail(count->entryAt, "bonds/N is " + std::to_string(readInteger(*count, place)) +
+                                               " but the frame has no bonds/group");
+            return;
+        }
+        const bool whole = range.begin == 0 && range.end == _points[frame];
+        {
+            std::lock_guard<std::mutex> lock(_bondsMutex);
+            if (whole && _bondsOf == group && _bondsPoints == _points[frame])
+                return data.setBonds(_bonds);
+        }
+        std::vector<uint32_t> frameIndexOfRow(static_cast<std::size_t>(_points[frame]), NOT_IN_FRAME);
+        for (uint64_t row = range.begin; row < range.end; ++row)
+            frameIndexOfRow[static_cast<std::size_t>(row)] = static_cast<uint32_t>(row - range.begin);
+        std::shared_ptr<const PointData::BondList> bonds =
+            makeListedBonds(readBondGroup(*group, frame, place), frameIndexOfRow);
+        if (whole)
+        {
+            std::lock_guard<std::mutex> lock(_bondsMutex);
+            _bondsOf = group;
+            _bondsPoints = _points[frame];
+            _bonds = bonds;
+        }
+        data.setBonds(bonds);
+    }
+
     osg::ref_ptr<PointData> decodeFrame(std::size_t frame, const PointShare& share) const override
     {
         const FilePlace place{&_path, frame};
@@ -711,6 +783,7 @@ private:
         for (const auto& quantity : _quantities)
             addQuantity(*data, frame, *quantity.first, quantity.second, range, place);
         setBox(*data, frame, place);
+        addBonds(*data, frame, range, place);
         data->setTimestep(_steps[frame]);
         data->setFilePointCount(_points[frame]);
         return data;
@@ -733,11 +806,18 @@ private:
     int _typesId = -1;
     int _typeIdId = -1;
     int _positionId = -1;
+    int _bondCountId = -1;
+    int _bondGroupId = -1;
     /** The per-particle quantities besides position and type that the file has, with their name ids. */
     std::vector<std::pair<const Quantity*, int>> _quantities;
     std::vector<int64_t> _steps;
     std::vector<uint64_t> _points;
     std::vector<std::pair<uint64_t, uint64_t>> _extents;
+    /** The last whole frame's bonds, and the bonds/group chunk and particle count they are of. */
+    mutable std::mutex _bondsMutex;
+    mutable const Chunk* _bondsOf = nullptr;
+    mutable uint64_t _bondsPoints = 0;
+    mutable std::shared_ptr<const PointData::BondList> _bonds;
 };
 
 }
