@@ -35,7 +35,7 @@ std::string formatOverdraw(double overdraw)
 
 void printSummaryRow(const BenchResult& result, const BenchResult* floor, const BenchResult* polygons)
 {
-    std::cout << std::left << std::setw(10) << osgGlyphs::getShapeName(result.shape) << std::setw(10)
+    std::cout << std::left << std::setw(14) << osgGlyphs::getShapeName(result.shape) << std::setw(10)
               << result.n << std::setw(18) << result.technique << std::setw(11)
               << (std::string(osgGlyphs::getCullingName(result.culling)) +
                   (result.ambientOcclusion ? " ao" : "") + describeScreenEffects(result.screenEffects) +
@@ -127,7 +127,7 @@ void printSummary(const std::vector<BenchResult>& results, const BenchSettings& 
 {
     std::cout << "\nSummary: median ms per frame, and relative to points-floor and to polygons (same "
                  "shape and n, this run)\n";
-    std::cout << std::left << std::setw(10) << "shape" << std::setw(10) << "n" << std::setw(18) << "technique"
+    std::cout << std::left << std::setw(14) << "shape" << std::setw(10) << "n" << std::setw(18) << "technique"
               << std::setw(11) << "culling" << std::right << std::setw(10) << "ms" << std::setw(12)
               << "/floor" << std::setw(12) << "/polygons" << std::setw(10) << "overdraw"
               << "\n";

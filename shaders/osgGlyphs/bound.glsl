@@ -118,8 +118,7 @@ bool glyphBound(Glyph glyph, out vec2 corners[4], out float nearestNdcZ)
     if (!vectorScreenBound(glyph.sphere.xyz, glyph.axis.xyz, glyph.axis.w, glyph.sphere.w, corners, nearestNdcZ))
         return false;
 #elif defined(OSGGLYPHS_SHAPE_SUPERQUADRIC)
-    if (!ellipsoidScreenBound(glyph.sphere.xyz, glyph.semiAxes * superquadricBoundScale(glyph.exponents), corners,
-                              nearestNdcZ))
+    if (!superquadricScreenBound(glyph.sphere.xyz, glyph.semiAxes, glyph.exponents, corners, nearestNdcZ))
         return false;
 #elif defined(OSGGLYPHS_AXES_SHAPE)
     if (!ellipsoidScreenBound(glyph.sphere.xyz, glyph.semiAxes, corners, nearestNdcZ))

@@ -15,6 +15,41 @@ float superquadricBoundScale(vec2 exponents)
     return min(exp2(0.5 * (excess.x + excess.y)), 1.7320508);
 }
 
+/** The radius of a sphere inside the superquadric: 2^(-(e - 1)/2) per exponent above 1 (an L^p norm
+ * of two components, p <= 2, is at most 2^(1/p - 1/2) times their L^2 norm, so N(p) <= |p| / it);
+ * 1 for exponents at most 1 (N <= the L^2 norm). */
+float superquadricInnerScale(vec2 exponents)
+{
+    vec2 excess = max(exponents - 1.0, 0.0);
+    return exp2(-0.5 * (excess.x + excess.y));
+}
+
+/** Four NDC corners (triangle-strip order) of a rectangle that contains the superquadric, and the
+ * NDC depth of its nearest point, as ellipsoidScreenBound() gives them for the ellipsoid that holds
+ * it; where the screen rectangle of the eight corners of its box (the superquadric lies in the box
+ * of its semi-axes) is smaller, as for boxes, that one. */
+bool superquadricScreenBound(vec3 centre, mat3 semiAxes, vec2 exponents, out vec2 corners[4], out float nearestNdcZ)
+{
+    if (!ellipsoidScreenBound(centre, semiAxes * superquadricBoundScale(exponents), corners, nearestNdcZ))
+        return false;
+    if (nearestNdcZ <= -1.0)
+        return true; // across the near plane: the whole view
+    vec2 low = vec2(1.0e30), high = vec2(-1.0e30);
+    for (int i = 0; i < 8; ++i)
+    {
+        vec3 signs = vec3((i & 1) != 0 ? 1.0 : -1.0, (i & 2) != 0 ? 1.0 : -1.0, (i & 4) != 0 ? 1.0 : -1.0);
+        vec4 clip = gl_ProjectionMatrix * vec4(centre + semiAxes * signs, 1.0);
+        if (!(clip.w > 0.0))
+            return true; // a corner behind the eye: the ellipse's rectangle
+        low = min(low, clip.xy / clip.w);
+        high = max(high, clip.xy / clip.w);
+    }
+    float ellipseArea = length(corners[1] - corners[0]) * length(corners[2] - corners[0]);
+    if ((high.x - low.x) * (high.y - low.y) < ellipseArea)
+        corners = vec2[4](low, vec2(high.x, low.y), vec2(low.x, high.y), high);
+    return true;
+}
+
 /** N(p) and its gradient (N is homogeneous of degree 1: the gradient is that of p / max|p_i|,
  * where every power is at most 1). */
 float superquadricNorm(vec3 p, vec2 exponents, out vec3 gradient)
@@ -42,21 +77,21 @@ float superquadricNorm(vec3 p, vec2 exponents, out vec3 gradient)
     return largest * n;
 }
 
-/** H(t) = N(o + t d) - 1 along a ray in the unit frame, and its derivative. */
-float superquadricAlong(vec3 o, vec3 d, float t, vec2 exponents, out float slope)
+/** H(t) = N(o + t d) - 1 along a ray in the unit frame, its derivative, and N's gradient there. */
+float superquadricAlong(vec3 o, vec3 d, float t, vec2 exponents, out float slope, out vec3 gradient)
 {
-    vec3 gradient;
     float h = superquadricNorm(o + t * d, exponents, gradient) - 1.0;
     slope = dot(gradient, d);
     return h;
 }
 
 /** Where the ray origin + t * direction runs inside the superquadric (centre, A^-1, exponents),
- * with the unit outward normals there; false if it misses. H is convex along the ray: its minimum
- * over the ray's span of the unit cube is bracketed by tangents (Kelley's cutting planes, which
- * also bound H from below: a bound above 0 is a certain miss), and once a point inside is found,
- * Newton's steps from the outside point on each side converge monotonically to the surface, never
- * past it. */
+ * with the unit outward normals there; false if it misses. H is convex along the ray. A ray through
+ * the sphere inside (superquadricInnerScale) has its points inside at once; for the others, the
+ * minimum of H over the ray's span of the unit cube is bracketed by tangents (Kelley's cutting
+ * planes, which also bound H from below: a bound above 0 is a certain miss). Once points inside
+ * are known, Newton's steps from the outside point on each side converge monotonically to the
+ * surface, never past it. */
 bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes, vec2 exponents,
                       out Span span)
 {
@@ -77,60 +112,80 @@ bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes
     if (!(lo < hi))
         return false;
     float gLo, gHi;
-    float hLo = superquadricAlong(o, d, lo, exponents, gLo);
-    float hHi = superquadricAlong(o, d, hi, exponents, gHi);
-    float inside = hLo <= 0.0 ? lo : (hHi <= 0.0 ? hi : -1.0e30);
-    for (int i = 0; i < 24 && inside == -1.0e30; ++i)
+    vec3 gradLo, gradHi = vec3(0.0);
+    float hLo = superquadricAlong(o, d, lo, exponents, gLo, gradLo);
+    float hHi = 1.0; // not yet evaluated while 1: only Kelley's search and the way out need it
+    // The points inside nearest each end: the inner sphere's span, or the one the search finds.
+    float insideFirst, insideLast;
+    float inner = superquadricInnerScale(exponents);
+    float innerH2 = inner * inner - dot(closest, closest);
+    if (innerH2 > 0.0)
     {
-        if (!(gLo < 0.0) || !(gHi > 0.0))
-            return false; // the minimum at an end, where H > 0
-        // The tangents at both ends meet at tx, where they bound H from below.
-        float tx = (hHi - hLo + gLo * lo - gHi * hi) / (gLo - gHi);
-        if (hLo + gLo * (tx - lo) > 0.0)
-            return false;
-        float t = (i % 3 == 2) ? 0.5 * (lo + hi) : clamp(tx, lo, hi);
-        float g;
-        float h = superquadricAlong(o, d, t, exponents, g);
-        if (h <= 0.0)
-            inside = t;
-        else if (g < 0.0)
-        {
-            lo = t;
-            hLo = h;
-            gLo = g;
-        }
-        else
-        {
-            hi = t;
-            hHi = h;
-            gHi = g;
-        }
+        float innerH = sqrt(innerH2 / a);
+        insideFirst = -b - innerH;
+        insideLast = -b + innerH;
     }
-    if (inside == -1.0e30)
-        return false; // a ray that grazes it closer than the steps tell
-    float enter = lo, leave = hi;
-    for (int i = 0; i < 16 && hLo > 2e-7 && gLo < 0.0; ++i)
+    else
     {
-        enter = min(enter - hLo / gLo, inside);
-        hLo = superquadricAlong(o, d, enter, exponents, gLo);
+        hHi = superquadricAlong(o, d, hi, exponents, gHi, gradHi);
+        float inside = hLo <= 0.0 ? lo : (hHi <= 0.0 ? hi : -1.0e30);
+        for (int i = 0; i < 24 && inside == -1.0e30; ++i)
+        {
+            if (!(gLo < 0.0) || !(gHi > 0.0))
+                return false; // the minimum at an end, where H > 0
+            // The tangents at both ends meet at tx, where they bound H from below.
+            float tx = (hHi - hLo + gLo * lo - gHi * hi) / (gLo - gHi);
+            if (hLo + gLo * (tx - lo) > 0.0)
+                return false;
+            float t = (i % 3 == 2) ? 0.5 * (lo + hi) : clamp(tx, lo, hi);
+            float g;
+            vec3 grad;
+            float h = superquadricAlong(o, d, t, exponents, g, grad);
+            if (h <= 0.0)
+                inside = t;
+            else if (g < 0.0)
+            {
+                lo = t;
+                hLo = h;
+                gLo = g;
+                gradLo = grad;
+            }
+            else
+            {
+                hi = t;
+                hHi = h;
+                gHi = g;
+                gradHi = grad;
+            }
+        }
+        if (inside == -1.0e30)
+            return false; // a ray that grazes it closer than the steps tell
+        insideFirst = insideLast = inside;
+    }
+    float enter = lo, leave = hi;
+    for (int i = 0; i < 16 && hLo > 1e-5 && gLo < 0.0; ++i)
+    {
+        enter = min(enter - hLo / gLo, insideFirst);
+        hLo = superquadricAlong(o, d, enter, exponents, gLo, gradLo);
     }
     // Where the ray leaves matters to a clip plane's cut, and to a ray that starts inside (then
     // keepNearerDrawnPoint draws the near plane's cut); elsewhere the bracket's end will do.
 #ifndef OSGGLYPHS_CLIP_PLANES
     if (enter < 0.0)
 #endif
-        for (int i = 0; i < 16 && hHi > 2e-7 && gHi > 0.0; ++i)
+    {
+        if (hHi == 1.0)
+            hHi = superquadricAlong(o, d, hi, exponents, gHi, gradHi);
+        for (int i = 0; i < 16 && hHi > 1e-5 && gHi > 0.0; ++i)
         {
-            leave = max(leave - hHi / gHi, inside);
-            hHi = superquadricAlong(o, d, leave, exponents, gHi);
+            leave = max(leave - hHi / gHi, insideLast);
+            hHi = superquadricAlong(o, d, leave, exponents, gHi, gradHi);
         }
-    vec3 gradient;
-    superquadricNorm(o + enter * d, exponents, gradient);
+    }
     mat3 toNormal = transpose(inverseAxes);
-    span = Span(enter, leave, normalize(toNormal * gradient), vec3(0.0));
+    span = Span(enter, leave, normalize(toNormal * gradLo), vec3(0.0));
 #ifdef OSGGLYPHS_CLIP_PLANES // the far side's normal is shown only through a clip plane's cut
-    superquadricNorm(o + leave * d, exponents, gradient);
-    span.nLeave = normalize(toNormal * gradient);
+    span.nLeave = normalize(toNormal * gradHi);
 #endif
     return true;
 }

@@ -83,7 +83,8 @@ double superquadricAlong(const dvec3& o, const dvec3& d, double t, const glm::dv
     return h;
 }
 
-/** superquadric.glsl: where the ray meets the superquadric, by the same steps. */
+/** superquadric.glsl: where the ray meets the superquadric, by its search for a point inside (the
+ * shader first tries the inner sphere, a shortcut to the same point) and its Newton steps. */
 bool intersectSuperquadric(const dvec3& origin, const dvec3& direction, const dvec3& centre,
                            const glm::dmat3& semiAxes, const glm::dvec2& exponents, double& tEnter,
                            double& tLeave, dvec3& nEnter)
