@@ -353,6 +353,31 @@ TEST(Gsd, AFileCutShortLosesItsLastFramesWithAWarning)
     }
 }
 
+namespace
+{
+
+/** A file's bytes, and what its error must say. */
+struct BadFile
+{
+    std::string name, bytes, expected;
+};
+
+/** Expects each file to fail with one line naming its path and saying what is expected. */
+void expectOneLineErrors(const std::vector<BadFile>& cases)
+{
+    for (const BadFile& bad : cases)
+    {
+        SCOPED_TRACE(bad.name);
+        const std::string path = writeScratchFile("bad.gsd", bad.bytes);
+        const std::string error = firstError(path);
+        EXPECT_NE(error.find(path), std::string::npos) << error;
+        EXPECT_NE(error.find(bad.expected), std::string::npos) << error;
+        EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+    }
+}
+
+}
+
 TEST(Gsd, FilesThatLieFailNamingTheFileFrameAndByte)
 {
     const std::string good = readBytes(gsdPath("melt.gsd"));
@@ -369,10 +394,7 @@ TEST(Gsd, FilesThatLieFailNamingTheFileFrameAndByte)
     const std::size_t nanAt = std::size_t(position2.location) + (7 * 3 + 1) * 4;
     const auto at = [](const Entry& entry) { return "byte " + std::to_string(entry.at) + ": "; };
 
-    const struct
-    {
-        std::string name, bytes, expected;
-    } cases[] = {
+    const std::vector<BadFile> cases = {
         {"empty", "", "the file is empty"},
         {"short", good.substr(0, 100), "shorter than the 256-byte header"},
         {"not gsd", std::string(300, 'x'), "not a GSD file"},
@@ -405,15 +427,7 @@ TEST(Gsd, FilesThatLieFailNamingTheFileFrameAndByte)
         {"negative box", withValue<float>(good, std::size_t(box0.location) + 4, -1.0f),
          "frame 0: byte " + std::to_string(box0.location) + ": configuration/box is not a box"},
     };
-    for (const auto& bad : cases)
-    {
-        SCOPED_TRACE(bad.name);
-        const std::string path = writeScratchFile("bad.gsd", bad.bytes);
-        const std::string error = firstError(path);
-        EXPECT_NE(error.find(path), std::string::npos) << error;
-        EXPECT_NE(error.find(bad.expected), std::string::npos) << error;
-        EXPECT_EQ(error.find('\n'), std::string::npos) << error;
-    }
+    expectOneLineErrors(cases);
 }
 
 // The bonds of the GSD the gsd package wrote of the polymer (tests/data/bonds/make_gsd.py), lying.
@@ -425,10 +439,7 @@ TEST(Gsd, BondsThatLieFailNamingTheFileFrameAndByte)
     const Entry count = findEntry(index, 0, "bonds/N");
     ASSERT_EQ(group.rows, 180u);
     const std::size_t bond5 = std::size_t(group.location) + 2 * 5 * 4;
-    const struct
-    {
-        std::string name, bytes, expected;
-    } cases[] = {
+    const std::vector<BadFile> cases = {
         {"past the particles", withValue<int32_t>(good, bond5 + 4, 192),
          "frame 0: byte " + std::to_string(bond5) +
              ": bonds/group: bond 5 joins particle 192, not one of the frame's 192 (particles/N)"},
@@ -440,13 +451,5 @@ TEST(Gsd, BondsThatLieFailNamingTheFileFrameAndByte)
          "frame 0: byte " + std::to_string(group.at) +
              ": bonds/group holds 180 x 2 int32 values, not 181 x 2 particle indices"},
     };
-    for (const auto& bad : cases)
-    {
-        SCOPED_TRACE(bad.name);
-        const std::string path = writeScratchFile("bad_bonds.gsd", bad.bytes);
-        const std::string error = firstError(path);
-        EXPECT_NE(error.find(path), std::string::npos) << error;
-        EXPECT_NE(error.find(bad.expected), std::string::npos) << error;
-        EXPECT_EQ(error.find('\n'), std::string::npos) << error;
-    }
+    expectOneLineErrors(cases);
 }
