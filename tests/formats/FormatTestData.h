@@ -12,6 +12,8 @@
 #include <iterator>
 #include <string>
 
+#include <unistd.h>
+
 namespace formattest
 {
 
@@ -83,10 +85,12 @@ inline void expectPositionsMatch(const osgGlyphsData::FrameSource& expected,
     }
 }
 
-/** Writes bytes to a scratch file in the test's temporary folder and returns its path. */
+/** Writes bytes to a scratch file of this process in the temporary folder and returns its path. */
 inline std::string writeScratchFile(const std::string& name, const std::string& bytes)
 {
-    const std::string path = ::testing::TempDir() + "osgglyphs_format_" + name;
+    // The process's own: ctest runs each test as a process, side by side.
+    const std::string path =
+        ::testing::TempDir() + "osgglyphs_format_" + std::to_string(getpid()) + "_" + name;
     std::ofstream(path, std::ios::binary | std::ios::trunc)
         .write(bytes.data(), std::streamsize(bytes.size()));
     return path;

@@ -362,13 +362,14 @@ struct BadFile
     std::string name, bytes, expected;
 };
 
-/** Expects each file to fail with one line naming its path and saying what is expected. */
-void expectOneLineErrors(const std::vector<BadFile>& cases)
+/** Expects each file, written to the scratch file of that name (one per test: tests run side by
+ * side), to fail with one line naming its path and saying what is expected. */
+void expectOneLineErrors(const std::vector<BadFile>& cases, const std::string& scratchName)
 {
     for (const BadFile& bad : cases)
     {
         SCOPED_TRACE(bad.name);
-        const std::string path = writeScratchFile("bad.gsd", bad.bytes);
+        const std::string path = writeScratchFile(scratchName, bad.bytes);
         const std::string error = firstError(path);
         EXPECT_NE(error.find(path), std::string::npos) << error;
         EXPECT_NE(error.find(bad.expected), std::string::npos) << error;
@@ -427,7 +428,7 @@ TEST(Gsd, FilesThatLieFailNamingTheFileFrameAndByte)
         {"negative box", withValue<float>(good, std::size_t(box0.location) + 4, -1.0f),
          "frame 0: byte " + std::to_string(box0.location) + ": configuration/box is not a box"},
     };
-    expectOneLineErrors(cases);
+    expectOneLineErrors(cases, "bad.gsd");
 }
 
 // The bonds of the GSD the gsd package wrote of the polymer (tests/data/bonds/make_gsd.py), lying.
@@ -451,5 +452,5 @@ TEST(Gsd, BondsThatLieFailNamingTheFileFrameAndByte)
          "frame 0: byte " + std::to_string(group.at) +
              ": bonds/group holds 180 x 2 int32 values, not 181 x 2 particle indices"},
     };
-    expectOneLineErrors(cases);
+    expectOneLineErrors(cases, "bad_bonds.gsd");
 }
