@@ -18,7 +18,14 @@ fail()
 window_session_end()
 {
     [[ -n $viewer_pid ]] && kill "$viewer_pid" 2>/dev/null
-    [[ -n $xvfb_pid ]] && kill "$xvfb_pid" 2>/dev/null
+    if [[ -n $xvfb_pid ]]; then
+        kill "$xvfb_pid" 2>/dev/null
+        # Until it is gone: a server still on its way out removes the socket and lock file of the
+        # next test's server of its display number (tests run side by side), whose clients then
+        # cannot connect ("Unable to open display").
+        wait "$xvfb_pid" 2>/dev/null
+    fi
+    return 0
 }
 
 window_session_begin()
@@ -41,7 +48,9 @@ display_session_begin()
     rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
     trap window_session_end EXIT
     # A display of its own: Xvfb picks a free number and writes it to fd 3.
-    Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>display.txt 2>xvfb.log &
+    # -noreset: a server that resets when its last client leaves refuses the next one for a moment,
+    # and OSG opens the display, closes it and opens it again at once.
+    Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp -noreset 3>display.txt 2>xvfb.log &
     xvfb_pid=$!
     for _ in $(seq 100); do
         [[ -s display.txt ]] && break
