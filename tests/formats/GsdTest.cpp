@@ -454,3 +454,54 @@ TEST(Gsd, BondsThatLieFailNamingTheFileFrameAndByte)
     };
     expectOneLineErrors(cases, "bad_bonds.gsd");
 }
+
+// ellipsoids.gsd (write_ellipsoids.py): the Gay-Berne liquid LAMMPS wrote, its type's shape an
+// Ellipsoid in particles/type_shapes. The reader gives LAMMPS's columns: the diameters along the body
+// axes, and the turns, particle by particle as the dump has them (by id).
+TEST(Gsd, EllipsoidTypeShapesAreTheDumpsEllipsoids)
+{
+    osg::ref_ptr<FrameSource> dump = openFrames(dataPath("../lammps/ellipsoids/dump.ellipsoids"));
+    osg::ref_ptr<FrameSource> gsd = openFrames(gsdPath("ellipsoids.gsd"));
+    ASSERT_TRUE(dump && gsd);
+    ASSERT_EQ(gsd->getNumFrames(), dump->getNumFrames());
+    for (std::size_t frame : {0u, 3u})
+    {
+        SCOPED_TRACE("frame " + std::to_string(frame));
+        osg::ref_ptr<PointData> want = frameOf(*dump, frame);
+        osg::ref_ptr<PointData> got = frameOf(*gsd, frame);
+        ASSERT_TRUE(want && got);
+        ASSERT_EQ(got->getNumPoints(), 144u);
+        const std::vector<float>& ids = *want->getColumn("id");
+        for (std::size_t row = 0; row < ids.size(); ++row)
+        {
+            const std::size_t particle = static_cast<std::size_t>(ids[row]) - 1;
+            for (const char* column : {"shapex", "shapey", "shapez", "quatw", "quati", "quatj", "quatk"})
+            {
+                ASSERT_TRUE(got->getColumn(column)) << column;
+                ASSERT_NEAR((*got->getColumn(column))[particle], (*want->getColumn(column))[row], 1e-6)
+                    << column << " of atom id " << ids[row];
+            }
+        }
+    }
+    // A file without Ellipsoids in its type_shapes has no shape columns.
+    EXPECT_FALSE(frameOf(*openFrames(gsdPath("shapes.gsd")), 0)->getColumn("shapex"));
+}
+
+TEST(Gsd, TypeShapesThatLieFailNamingTheFileFrameAndByte)
+{
+    const std::string good = readBytes(gsdPath("ellipsoids.gsd"));
+    const Entry shapes = findEntry(readIndex(good), 0, "particles/type_shapes");
+    const std::size_t at = std::size_t(shapes.location);
+    const std::string text = good.substr(at, std::size_t(shapes.columns));
+    const std::size_t a = at + text.find("1.5");
+    const std::string where =
+        "frame 0: byte " + std::to_string(at) + ": particles/type_shapes of type 'GB': ";
+    const std::vector<BadFile> cases = {
+        {"negative", withValue<char>(withValue<char>(good, a, '-'), a + 1, '1'),
+         where + "an Ellipsoid's \"a\" is '-15', not a finite number > 0"},
+        {"not a number", withValue<char>(good, a, 'x'), where + "an Ellipsoid's \"a\" is 'x.5'"},
+        {"not an object", withValue<char>(good, at, '['), where + "not a JSON object at character 0"},
+        {"cut", withValue<char>(good, at + text.find('}'), ' '), where + "no ',' or '}' after the value"},
+    };
+    expectOneLineErrors(cases, "bad_shapes.gsd");
+}

@@ -13,15 +13,17 @@
 // The hoomd schema (1.x): configuration/step and /box; particles/N, types, typeid, position,
 // velocity, orientation, angmom, image, mass, charge, diameter, body and moment_inertia become
 // columns (typeid with types as the categorical column "species"); bonds/N and bonds/group are the
-// frame's bond list (PointData::getBonds()); type_shapes, the other groups, state/ and log/ are not
-// read. A frame that omits a chunk takes frame 0's (for a per-particle chunk, only when frame 0 has
-// as many particles), else the schema's default.
+// frame's bond list (PointData::getBonds()); type_shapes' Ellipsoids are the columns shapex, shapey,
+// shapez (diameters, as LAMMPS writes them); the other groups, state/ and log/ are not read. A frame that
+// omits a chunk takes frame 0's (for a per-particle chunk, only when frame 0 has as many particles), else the
+// schema's default.
 
 #include "../ListedBonds.h"
 #include "../readers/Fields.h"
 #include "BinaryFile.h"
 #include "FormatFrameFile.h"
 #include "Formats.h"
+#include "GsdShapes.h"
 
 #include <algorithm>
 #include <array>
@@ -354,6 +356,7 @@ private:
         _countId = idOf("particles/N");
         _typesId = idOf("particles/types");
         _typeIdId = idOf("particles/typeid");
+        _typeShapesId = idOf("particles/type_shapes");
         _positionId = idOf(POSITION.chunk);
         _bondCountId = idOf("bonds/N");
         _bondGroupId = idOf("bonds/group");
@@ -677,6 +680,53 @@ private:
         data.setColumnLabels("species", std::move(types));
     }
 
+    /** Where particles/type_shapes (the frame's or frame 0's) makes a type an Ellipsoid, the columns
+     * shapex, shapey, shapez: the diameters along the body axes (2a, 2b, 2c; LAMMPS's convention,
+     * which quatw..quatk turn as GSD's orientation does), and for the particles of other types their
+     * diameter. */
+    void addEllipsoidShapes(PointData& data, std::size_t frame, const FilePlace& place) const
+    {
+        const Chunk* chunk = persistent(frame, _typeShapesId);
+        if (!chunk)
+            return;
+        if (typeSize(chunk->type) != 1)
+            place.fail(chunk->entryAt, "particles/type_shapes holds " + std::string(typeName(chunk->type)) +
+                                           " values, not characters");
+        const std::vector<std::string>& types = data.getColumnLabels("species");
+        std::string bytes(static_cast<std::size_t>(chunk->bytes()), '\0');
+        _file.read(chunk->location, &bytes[0], bytes.size(), place, "particles/type_shapes");
+        std::vector<osg::Vec3> diameters(types.size());
+        bool ellipsoids = false;
+        for (uint64_t row = 0; row < chunk->rows && row < types.size(); ++row)
+        {
+            const uint64_t at = row * chunk->columns;
+            const std::string text = bytes.substr(static_cast<std::size_t>(at), chunk->columns);
+            GsdShapeKind kind;
+            osg::Vec3 semiAxes;
+            std::string error;
+            if (!parseGsdShape(text.substr(0, text.find('\0')), kind, semiAxes, error))
+                place.fail(chunk->location + at,
+                           "particles/type_shapes of type '" + types[row] + "': " + error);
+            ellipsoids = ellipsoids || kind == GsdShapeKind::Ellipsoid;
+            diameters[row] = kind == GsdShapeKind::Ellipsoid ? semiAxes * 2.0f : osg::Vec3();
+        }
+        if (!ellipsoids)
+            return;
+        const std::vector<float>& species = *data.getColumn("species");
+        const std::vector<float>* diameter = data.getColumn("diameter");
+        std::vector<float> columns[3];
+        for (std::size_t i = 0; i < species.size(); ++i)
+        {
+            const osg::Vec3& d = diameters[static_cast<std::size_t>(species[i])];
+            const float sphere = diameter ? (*diameter)[i] : 1.0f;
+            for (int axis = 0; axis < 3; ++axis)
+                columns[axis].push_back(d[axis] > 0.0f ? d[axis] : sphere);
+        }
+        data.addColumn("shapex", std::move(columns[0]));
+        data.addColumn("shapey", std::move(columns[1]));
+        data.addColumn("shapez", std::move(columns[2]));
+    }
+
     /** HOOMD's box [Lx, Ly, Lz, xy, xz, yz]: the cell a1 = (Lx, 0, 0), a2 = (xy Ly, Ly, 0),
      * a3 = (xz Lz, yz Lz, Lz) (tilt factors are dimensionless), centred at the origin (BoxDim's
      * lo = -L/2, to which makeCoordinates adds the tilts of lo itself): its corner lies at
@@ -782,6 +832,7 @@ private:
         addSpecies(*data, frame, range, place);
         for (const auto& quantity : _quantities)
             addQuantity(*data, frame, *quantity.first, quantity.second, range, place);
+        addEllipsoidShapes(*data, frame, place);
         setBox(*data, frame, place);
         addBonds(*data, frame, range, place);
         data->setTimestep(_steps[frame]);
@@ -805,6 +856,7 @@ private:
     int _countId = -1;
     int _typesId = -1;
     int _typeIdId = -1;
+    int _typeShapesId = -1;
     int _positionId = -1;
     int _bondCountId = -1;
     int _bondGroupId = -1;

@@ -5,5 +5,6 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 /usr/bin/python3 write_gsd.py
+/usr/bin/python3 write_ellipsoids.py
 chmod 644 ./*.gsd
 ls -l ./*.gsd
