@@ -126,3 +126,38 @@ TEST(EllipsoidColumns, AnEllipsoidOfDataWithoutShapesIsOneError)
               std::string::npos)
         << error;
 }
+
+// OVITO's Superquadric Roundness (Phi, Theta) beside Aspherical Shape: superquadrics by default, of
+// exponents e1 = Phi (along the body z axis) and e2 = Theta; roundness 0 (OVITO's box) is the
+// sharpest exponent drawn; --glyph ellipsoid leaves the roundness out.
+TEST(EllipsoidColumns, OvitoRoundnessMakesSuperquadrics)
+{
+    const std::string csv = "x,y,z,Aspherical Shape.X,Aspherical Shape.Y,Aspherical Shape.Z,"
+                            "Superquadric Roundness.Phi,Superquadric Roundness.Theta\n"
+                            "0,0,0,2,1,0.5,0.3,1.5\n3,0,0,1,1,1,0,1\n";
+    std::string error;
+    osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = mapCsv(csv, GlyphMappingOptions(), error);
+    ASSERT_TRUE(cloud.valid()) << error;
+    EXPECT_EQ(cloud->getShape(), osgGlyphs::GlyphShape::Superquadric);
+    ASSERT_NE(cloud->getExponents(), nullptr);
+    EXPECT_EQ((*cloud->getExponents())[0], osg::Vec2(0.3f, 1.5f));
+    EXPECT_EQ((*cloud->getExponents())[1], osg::Vec2(0.1f, 1.0f));
+    EXPECT_EQ((*cloud->getSemiAxes())[0], osg::Vec3(2.0f, 1.0f, 0.5f));
+    EXPECT_EQ(cloud->getNumSkippedGlyphs(), 0u);
+
+    GlyphMappingOptions ellipsoids;
+    ASSERT_TRUE(setGlyphMappingOption(ellipsoids, "glyph", "ellipsoid", error)) << error;
+    cloud = mapCsv(csv, ellipsoids, error);
+    ASSERT_TRUE(cloud.valid()) << error;
+    EXPECT_EQ(cloud->getShape(), osgGlyphs::GlyphShape::Ellipsoid);
+    EXPECT_EQ(cloud->getExponents(), nullptr);
+
+    GlyphMappingOptions superquadrics;
+    superquadrics.optionPrefix = "--";
+    ASSERT_TRUE(setGlyphMappingOption(superquadrics, "glyph", "superquadric", error)) << error;
+    EXPECT_FALSE(mapCsv("x,y,z,shapex,shapey,shapez\n0,0,0,2,1,1\n", superquadrics, error).valid());
+    EXPECT_NE(error.find("--glyph superquadric draws tensors (--tensor, Kindlmann's glyphs) or shapes with a "
+                         "roundness"),
+              std::string::npos)
+        << error;
+}

@@ -52,6 +52,15 @@ const std::vector<std::vector<std::string>> ROTATION_CANDIDATES = {
     {"quati", "quatj", "quatk", "quatw"},
     {"Orientation.X", "Orientation.Y", "Orientation.Z", "Orientation.W"}};
 
+/** Superquadrics' exponents: OVITO's Superquadric Roundness (Phi, along the body z axis; Theta,
+ * around it: Barr's e1 and e2), by its component names or as X and Y. */
+const std::vector<std::vector<std::string>> ROUNDNESS_CANDIDATES = {
+    {"Superquadric Roundness.Phi", "Superquadric Roundness.Theta"},
+    {"Superquadric Roundness.X", "Superquadric Roundness.Y"}};
+
+/** OVITO's roundness 0 is a box: the sharpest exponent the glyphs draw. */
+const float SHARPEST_ROUNDNESS = 0.1f;
+
 /** What --color-by names of a tensor, in the order of TensorQuantity. */
 const char* const TENSOR_QUANTITIES[] = {"trace", "anisotropy", "eigenvalue1", "eigenvalue2", "eigenvalue3"};
 
@@ -167,6 +176,7 @@ bool GlyphMapper::resolveEllipsoids(const PointData& data, std::string& error)
 {
     _semiAxisColumns.clear();
     _rotationColumns.clear();
+    _exponentColumns.clear();
     if (!_options.tensorColumns.empty())
     {
         for (const std::string& column : _options.tensorColumns)
@@ -185,17 +195,25 @@ bool GlyphMapper::resolveEllipsoids(const PointData& data, std::string& error)
             _options.shape = GlyphShape::Ellipsoid;
         return true;
     }
-    if (_options.shape == GlyphShape::Superquadric)
+    const int shape = findColumnTriple(data, SHAPE_CANDIDATES);
+    const auto roundness = std::find_if(ROUNDNESS_CANDIDATES.begin(), ROUNDNESS_CANDIDATES.end(),
+                                        [&](const std::vector<std::string>& names)
+                                        { return data.hasColumn(names[0]) && data.hasColumn(names[1]); });
+    if (_options.shape == GlyphShape::Superquadric && (shape < 0 || roundness == ROUNDNESS_CANDIDATES.end()))
     {
         error = option("glyph") + " superquadric draws tensors (" + option("tensor") +
-                ", Kindlmann's glyphs); the data's shapes are drawn as ellipsoids";
+                ", Kindlmann's glyphs) or shapes with a roundness (OVITO's Aspherical Shape and Superquadric "
+                "Roundness); " +
+                frameName(data) + " has none";
         return false;
     }
-    const int shape = findColumnTriple(data, SHAPE_CANDIDATES);
     if (shape >= 0 && !_options.shapeGiven)
-        _options.shape = GlyphShape::Ellipsoid;
-    if (_options.shape != GlyphShape::Ellipsoid)
+        _options.shape =
+            roundness != ROUNDNESS_CANDIDATES.end() ? GlyphShape::Superquadric : GlyphShape::Ellipsoid;
+    if (!isAxesShape(_options.shape))
         return true;
+    if (_options.shape == GlyphShape::Superquadric)
+        _exponentColumns = *roundness;
     if (shape < 0)
     {
         error = option("glyph") + " ellipsoid needs semi-axes: no shapex,shapey,shapez in " +
@@ -796,7 +814,7 @@ bool GlyphMapper::computeEllipsoids(const PointData& data, FrameArrays& arrays, 
             a.set(_radius, _radius, _radius); // a point particle
     }
     if (_rotationColumns.empty())
-        return true;
+        return computeExponents(data, arrays, error);
     ColumnValues q[4];
     for (int k = 0; k < 4; ++k)
         if (!q[k].assign(data, _rotationColumns[k]))
@@ -807,6 +825,26 @@ bool GlyphMapper::computeEllipsoids(const PointData& data, FrameArrays& arrays, 
     arrays.orientations = new osg::Vec4Array(n);
     for (std::size_t i = 0; i < n; ++i)
         (*arrays.orientations)[i].set((*q[0])[i], (*q[1])[i], (*q[2])[i], (*q[3])[i]);
+    return computeExponents(data, arrays, error);
+}
+
+bool GlyphMapper::computeExponents(const PointData& data, FrameArrays& arrays, std::string& error) const
+{
+    if (_exponentColumns.empty())
+        return true;
+    ColumnValues e[2];
+    for (int k = 0; k < 2; ++k)
+        if (!e[k].assign(data, _exponentColumns[k]))
+        {
+            error = missingColumn(option("glyph") + " superquadric", _exponentColumns[k], data);
+            return false;
+        }
+    // Negative and non-finite exponents stay: the cloud skips their glyphs with a warning.
+    const auto exponent = [](float roundness)
+    { return roundness >= 0.0f ? std::max(roundness, SHARPEST_ROUNDNESS) : roundness; };
+    arrays.exponents = new osg::Vec2Array(data.getNumPoints());
+    for (std::size_t i = 0; i < data.getNumPoints(); ++i)
+        (*arrays.exponents)[i].set(exponent((*e[0])[i]), exponent((*e[1])[i]));
     return true;
 }
 
@@ -928,9 +966,11 @@ std::string GlyphMapper::describe() const
                                                             : " as ellipsoids, ") +
                 formatNumber(_tensorScale) + " per unit of eigenvalue";
     if (!_semiAxisColumns.empty())
-        text += ", ellipsoids of semi-axes " + joinColumns(_semiAxisColumns) +
+        text += (_exponentColumns.empty() ? ", ellipsoids" : ", superquadrics") +
+                std::string(" of semi-axes ") + joinColumns(_semiAxisColumns) +
                 (_semiAxisFactor != 1.0f ? " x " + formatNumber(_semiAxisFactor) : std::string()) +
-                (_rotationColumns.empty() ? std::string() : " turned by " + joinColumns(_rotationColumns));
+                (_rotationColumns.empty() ? std::string() : " turned by " + joinColumns(_rotationColumns)) +
+                (_exponentColumns.empty() ? std::string() : ", exponents " + joinColumns(_exponentColumns));
     return text;
 }
 
