@@ -114,7 +114,7 @@ bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes
     float gLo, gHi;
     vec3 gradLo, gradHi = vec3(0.0);
     float hLo = superquadricAlong(o, d, lo, exponents, gLo, gradLo);
-    float hHi = 1.0; // not yet evaluated while 1: only Kelley's search and the way out need it
+    float hHi = 0.0; // evaluated by the search, or for the way out: only they need it
     // The points inside nearest each end: the inner sphere's span, or the one the search finds.
     float insideFirst, insideLast;
     float inner = superquadricInnerScale(exponents);
@@ -174,7 +174,7 @@ bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes
     if (enter < 0.0)
 #endif
     {
-        if (hHi == 1.0)
+        if (innerH2 > 0.0) // no search ran
             hHi = superquadricAlong(o, d, hi, exponents, gHi, gradHi);
         for (int i = 0; i < 16 && hHi > 1e-5 && gHi > 0.0; ++i)
         {
