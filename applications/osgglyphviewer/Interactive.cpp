@@ -85,7 +85,7 @@ int runInteractive(ViewerScene& scene, const ViewerOptions& options, osg::Applic
     osgText::Text* pickText = nullptr;
     scene.getRoot()->addChild(createPickHud(options.width, options.height, options.background, pickText));
     keys->setPickText(pickText);
-    if (osgGlyphsData::TrajectoryPlayer* player = scene.getPlayer())
+    if (osgGlyphsData::FramePlayer* player = scene.getPlayer())
     {
         // Before the other handlers: a click on the bar seeks instead of picking or turning.
         osg::ref_ptr<Timeline> timeline = new Timeline(player, camera, options.background);

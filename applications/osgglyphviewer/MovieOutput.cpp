@@ -145,14 +145,14 @@ std::vector<double> listPictures(const PlaybackOptions& playback, std::size_t nu
 int renderPictureSequence(ViewerScene& scene, osgGlyphsHeadless::OffscreenViewer& viewer,
                           const ViewerOptions& options)
 {
-    osgGlyphsData::TrajectoryPlayer* player = scene.getPlayer();
+    osgGlyphsData::FramePlayer* player = scene.getPlayer();
     std::string error;
     if (!player)
     {
         std::cerr << PROGRAM << ": --frame-range and --movie need a file of frames" << std::endl;
         return 1;
     }
-    player->getCache()->getSource()->waitForIndex();
+    player->waitForIndex();
     PlaybackOptions playback = options.playback;
     if (!playback.hasFrameRange)
         playback.range.last = SIZE_MAX;
@@ -186,7 +186,7 @@ int renderPictureSequence(ViewerScene& scene, osgGlyphsHeadless::OffscreenViewer
         std::cerr << PROGRAM << ": " << error << std::endl;
         return 1;
     }
-    const osgGlyphsData::TrajectoryPlayerStatistics statistics = player->getStatistics();
+    const osgGlyphsData::FramePlayerStatistics statistics = player->getStatistics();
     std::printf("%s: rendered %zu pictures (%llu interpolated) in %.2f s, %.1f pictures/s\n", PROGRAM,
                 pictures.size(), static_cast<unsigned long long>(statistics.interpolated), progress.elapsed(),
                 pictures.size() / std::max(progress.elapsed(), 1e-9));

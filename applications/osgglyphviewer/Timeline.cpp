@@ -50,7 +50,7 @@ void placeQuad(osg::Geometry& quad, float x0, float y0, float x1, float y1)
 class FollowPlayer : public osg::NodeCallback
 {
 public:
-    FollowPlayer(osgGlyphsData::TrajectoryPlayer* player, osg::Camera* reference, const osg::Vec4& background)
+    FollowPlayer(osgGlyphsData::FramePlayer* player, osg::Camera* reference, const osg::Vec4& background)
         : _player(player), _reference(reference), _geode(new osg::Geode), _track(createQuad(osg::Vec4())),
           _played(createQuad(osg::Vec4())), _marker(createQuad(osg::Vec4())), _text(new osgText::Text)
     {
@@ -125,7 +125,7 @@ private:
         }
     }
 
-    osg::ref_ptr<osgGlyphsData::TrajectoryPlayer> _player;
+    osg::ref_ptr<osgGlyphsData::FramePlayer> _player;
     osg::observer_ptr<osg::Camera> _reference;
     osg::ref_ptr<osg::Geode> _geode;
     osg::ref_ptr<osg::Geometry> _track, _played, _marker;
@@ -136,9 +136,8 @@ private:
 
 }
 
-std::string describePlayback(const osgGlyphsData::TrajectoryPlayer& player)
+std::string describePlayback(const osgGlyphsData::FramePlayer& player)
 {
-    const osgGlyphsData::FrameSource* source = player.getCache()->getSource();
     const std::size_t frames = player.getNumFrames();
     const double position = player.getPosition();
     const bool between = std::abs(position - std::round(position)) > 1e-9;
@@ -146,7 +145,7 @@ std::string describePlayback(const osgGlyphsData::TrajectoryPlayer& player)
     char frame[64];
     std::snprintf(frame, sizeof(frame), between ? "frame %.2f of 0..%zu" : "frame %.0f of 0..%zu", position,
                   frames > 0 ? frames - 1 : 0);
-    std::string line = std::string(frame) + (source->isIndexComplete() ? "" : "+");
+    std::string line = std::string(frame) + (player.isIndexComplete() ? "" : "+");
     line += "  timestep " + formatRate(player.getTimestep());
     if (player.isPlaying())
         line += "  playing at " + formatRate(player.getFramesPerSecond()) + "/s";
@@ -160,13 +159,13 @@ std::string describePlayback(const osgGlyphsData::TrajectoryPlayer& player)
         line += ", " + std::to_string(player.getSubframes()) + " between";
     if (!player.getLoop())
         line += ", no loop";
-    const osgGlyphsData::TrajectoryPlayerStatistics statistics = player.getStatistics();
+    const osgGlyphsData::FramePlayerStatistics statistics = player.getStatistics();
     if (statistics.late > 0)
         line += "  (" + std::to_string(statistics.late) + " late)";
     return line;
 }
 
-Timeline::Timeline(osgGlyphsData::TrajectoryPlayer* player, osg::Camera* reference,
+Timeline::Timeline(osgGlyphsData::FramePlayer* player, osg::Camera* reference,
                    const osg::Vec4& background)
     : _player(player), _hud(createHudCamera("osgglyphviewer timeline")), _reference(reference)
 {

@@ -3,7 +3,7 @@
 #ifndef OSGGLYPHVIEWER_TIMELINE_H
 #define OSGGLYPHVIEWER_TIMELINE_H 1
 
-#include <osgGlyphsData/TrajectoryPlayer>
+#include <osgGlyphsData/FramePlayer>
 
 #include <osg/Camera>
 #include <osgGA/GUIEventHandler>
@@ -11,7 +11,7 @@
 #include <string>
 
 /** One line on the player's state: "frame 12 of 31 · timestep 1200 · playing at 10 frames/s". */
-std::string describePlayback(const osgGlyphsData::TrajectoryPlayer& player);
+std::string describePlayback(const osgGlyphsData::FramePlayer& player);
 
 /** The timeline at the bottom of the view: a bar with the played part filled and a marker at
  * the picture shown, and the line of describePlayback() above it. It follows the player every
@@ -23,7 +23,7 @@ std::string describePlayback(const osgGlyphsData::TrajectoryPlayer& player);
 class Timeline : public osgGA::GUIEventHandler
 {
 public:
-    Timeline(osgGlyphsData::TrajectoryPlayer* player, osg::Camera* reference, const osg::Vec4& background);
+    Timeline(osgGlyphsData::FramePlayer* player, osg::Camera* reference, const osg::Vec4& background);
 
     /** The HUD camera to add to the scene. */
     osg::Camera* getHud() const { return _hud.get(); }
@@ -43,7 +43,7 @@ protected:
     /** Seeks to the frame at window x; true when (x, y) is on the bar or a drag goes on. */
     bool seekAt(float x, float y, bool dragging);
 
-    osg::ref_ptr<osgGlyphsData::TrajectoryPlayer> _player;
+    osg::ref_ptr<osgGlyphsData::FramePlayer> _player;
     osg::ref_ptr<osg::Camera> _hud;
     osg::observer_ptr<osg::Camera> _reference;
     bool _dragging = false;

@@ -169,8 +169,8 @@ void ViewerEventHandler::stepFrame(int step)
 
 bool ViewerEventHandler::handlePlaybackKey(int key)
 {
-    osgGlyphsData::TrajectoryPlayer* player = _scene ? _scene->getPlayer() : nullptr;
-    if (!player || (_scene->getNumFrames() < 2 && player->getCache()->getSource()->isIndexComplete()))
+    osgGlyphsData::FramePlayer* player = _scene ? _scene->getPlayer() : nullptr;
+    if (!player || (_scene->getNumFrames() < 2 && player->isIndexComplete()))
         return false; // one frame: space stays the manipulator's home key
     switch (key)
     {

@@ -42,7 +42,7 @@ std::size_t ViewerScene::getNumFrames() const
     return _player.valid() ? _player->getNumFrames() : _numFrames;
 }
 
-void ViewerScene::setPlayer(osgGlyphsData::TrajectoryPlayer* player)
+void ViewerScene::setPlayer(osgGlyphsData::FramePlayer* player)
 {
     _player = player;
 }

@@ -7,7 +7,7 @@
 
 #include <osgGlyphs/GlyphCloud>
 #include <osgGlyphsData/GlyphMapping>
-#include <osgGlyphsData/TrajectoryPlayer>
+#include <osgGlyphsData/FramePlayer>
 
 #include <osg/Camera>
 #include <osg/ClipNode>
@@ -44,8 +44,8 @@ public:
 
     /** The player of a trajectory, which then makes the frames (setFrame() shows them through
      * it): its cloud is the content, its update callback on the content's group. */
-    void setPlayer(osgGlyphsData::TrajectoryPlayer* player);
-    osgGlyphsData::TrajectoryPlayer* getPlayer() const { return _player.get(); }
+    void setPlayer(osgGlyphsData::FramePlayer* player);
+    osgGlyphsData::FramePlayer* getPlayer() const { return _player.get(); }
 
     /** Reads the frames its file completed since the last call; added: how many (--follow). */
     typedef std::function<bool(std::size_t& added, std::string& error)> FrameFollower;
@@ -110,7 +110,7 @@ protected:
     static void computeOcclusion(osg::Node& node);
 
     FrameSource _source;
-    osg::ref_ptr<osgGlyphsData::TrajectoryPlayer> _player;
+    osg::ref_ptr<osgGlyphsData::FramePlayer> _player;
     FrameFollower _follower;
     std::size_t _numFrames;
     std::size_t _frame = 0;
