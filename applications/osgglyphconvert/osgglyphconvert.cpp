@@ -5,6 +5,7 @@
 #include "ConvertProgress.h"
 #include "FrameRange.h"
 #include "SequentialShares.h"
+#include "SeriesIndex.h"
 
 #include <osgGlyphsData/FrameSource>
 #include <osgGlyphsData/GlyphMapping>
@@ -79,6 +80,10 @@ struct ConvertOptions
      * output as a pattern (formatFramePath()). */
     FrameRange frames;
     bool hasFrameRange = false;
+    /** Of --frame-range: the pattern of the frames' archives (the output itself, or beside the
+     * output when that is a series index, .osgt or .osgb). */
+    std::string framePattern;
+    bool series = false;
     unsigned long long randomCount = 0;
     unsigned int seed = 1;
     osgGlyphsData::GlyphMappingOptions mapping;
@@ -187,12 +192,18 @@ bool readFrameOptions(osg::ArgumentParser& arguments, ConvertOptions& options, s
 bool checkOutputPattern(const ConvertOptions& options, std::string& error)
 {
     std::string name;
-    if (!osgGlyphsData::formatFramePath(options.output, 0, name))
+    if (options.series && options.output.find('%') != std::string::npos)
+    {
+        error = options.output + ": a series' index is one file: name it without a pattern (its frames are " +
+                seriesFramePattern("name.osgt") + ")";
+        return false;
+    }
+    if (!osgGlyphsData::formatFramePath(options.framePattern, 0, name))
     {
         error = options.output + ": the output's pattern takes one integer conversion, such as %04d";
         return false;
     }
-    if (options.frames.mayHoldSeveral() && options.output.find('%') == std::string::npos)
+    if (options.frames.mayHoldSeveral() && options.framePattern.find('%') == std::string::npos)
     {
         error = options.frames.option +
                 " writes an archive per frame: name the output with a pattern such as "
@@ -299,9 +310,12 @@ bool readOptions(osg::ArgumentParser& arguments, ConvertOptions& options, std::s
         const std::string folder = osgDB::getFilePath(options.output);
         options.tiles.temporaryDirectory = folder.empty() ? "." : folder;
     }
-    if (osgDB::getLowerCaseFileExtension(options.output) != "osga")
+    options.series = options.hasFrameRange && isSeriesIndex(options.output);
+    options.framePattern = options.series ? seriesFramePattern(options.output) : options.output;
+    if (osgDB::getLowerCaseFileExtension(options.output) != "osga" && !options.series)
     {
-        error = options.output + ": the output is an OSG archive, named *.osga";
+        error = options.output + ": the output is an OSG archive, named *.osga" +
+                (options.hasFrameRange ? ", or with --frame-range a series' index, *.osgt or *.osgb" : "");
         return false;
     }
     if (!options.topology.empty() && options.randomCount)
@@ -712,9 +726,12 @@ bool writeFrame(const ConvertOptions& options, const Trajectory& trajectory, con
 void printSeriesSummary(const ConvertOptions& options, const SeriesSummary& summary, double seconds)
 {
     std::fprintf(
-        stderr, "%s: wrote %zu frame%s to %s: %.0f glyphs, %.1f MB in %.2f s (%.3g M glyph-frames/s)\n",
+        stderr,
+        "%s: wrote %zu frame%s to %s: %.0f glyph-frames, %.1f MB (%.2f bytes per glyph-frame) in %.2f s "
+        "(%.3g M glyph-frames/s)\n",
         PROGRAM, summary.written, summary.written == 1 ? "" : "s", options.output.c_str(), summary.glyphs,
-        summary.bytes / 1e6, seconds, seconds > 0 ? summary.glyphs / seconds / 1e6 : 0.0);
+        summary.bytes / 1e6, summary.glyphs > 0 ? summary.bytes / summary.glyphs : 0.0, seconds,
+        seconds > 0 ? summary.glyphs / seconds / 1e6 : 0.0);
     if (summary.failed)
         std::fprintf(stderr, "%s: %zu of %zu frames failed\n", PROGRAM, summary.failed,
                      summary.failed + summary.written);
@@ -737,6 +754,7 @@ int convertFrameRange(const ConvertOptions& options)
     const std::vector<std::size_t>& frames = trajectory.frames;
     progress.start("converting " + std::to_string(frames.size()) + " frames");
     SeriesSummary summary;
+    osg::ref_ptr<osgGlyphsTiles::TileSeries> series = new osgGlyphsTiles::TileSeries;
     std::future<DecodedFrame> next = std::move(trajectory.first);
     for (std::size_t i = 0; i < frames.size(); ++i)
     {
@@ -744,7 +762,7 @@ int convertFrameRange(const ConvertOptions& options)
         if (i + 1 < frames.size())
             next = decodeLater(*trajectory.source, frames[i + 1]);
         std::string path;
-        osgGlyphsData::formatFramePath(options.output, frames[i], path);
+        osgGlyphsData::formatFramePath(options.framePattern, frames[i], path);
         const auto update = [&progress, i, &frames](double done)
         { progress.update((i + done) / frames.size()); };
         if (!writeFrame(options, trajectory, decoded, path, update, summary, error))
@@ -754,8 +772,16 @@ int convertFrameRange(const ConvertOptions& options)
                       << trajectory.source->getFrameInfo(frames[i]).timestep << "): " << error << std::endl;
             ++summary.failed;
         }
+        else
+            series->addFrame(osgDB::getSimpleFileName(path),
+                             static_cast<double>(trajectory.source->getFrameInfo(frames[i]).timestep));
     }
     progress.finish();
+    if (options.series && !writeSeriesIndex(*series, options.output, error))
+    {
+        std::cerr << PROGRAM << ": " << error << std::endl;
+        return 1;
+    }
     printSeriesSummary(options, summary,
                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return summary.failed ? 1 : 0;

@@ -24,9 +24,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-/** The longest wait for paged tiles before a picture is written anyway. */
-const double PAGING_TIMEOUT_SECONDS = 120.0;
-
 /** Writes the outputs of the frame just rendered; depth comes from sceneCapture, which read it
  * before the legend was drawn, with the projection the scene was drawn with. */
 bool writeOutputs(osgGlyphsHeadless::OffscreenViewer& viewer,

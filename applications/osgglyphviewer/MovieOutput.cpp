@@ -174,6 +174,7 @@ int renderPictureSequence(ViewerScene& scene, osgGlyphsHeadless::OffscreenViewer
             std::cerr << PROGRAM << ": warning: picture " << i << " repeats the one before: " << error
                       << std::endl;
         viewer.frame();
+        viewer.settlePaging(PAGING_TIMEOUT_SECONDS); // a series of tile archives: every tile in view
         if (!outputs.write(*viewer.getColorImage(), i, error))
         {
             std::cerr << "\n" << PROGRAM << ": " << error << std::endl;

@@ -1,4 +1,7 @@
 #include "PlaybackOptions.h"
+#include "ViewerOptions.h"
+
+#include <iostream>
 
 void describePlaybackOptions(osg::ApplicationUsage& usage)
 {
@@ -88,4 +91,14 @@ bool readPlaybackOptions(osg::ArgumentParser& arguments, PlaybackOptions& option
         options.cacheMegabytes = static_cast<std::size_t>(value);
     }
     return true;
+}
+
+void applyPlaybackOptions(const PlaybackOptions& options, osgGlyphsData::FramePlayer& player)
+{
+    player.setFramesPerSecond(options.framesPerSecond);
+    player.setSubframes(options.subframes);
+    player.setStep(options.step);
+    player.setLoop(options.loop);
+    player.setErrorHandler([](const std::string& message)
+                           { std::cerr << PROGRAM << ": " << message << std::endl; });
 }

@@ -3,6 +3,7 @@
 #ifndef OSGGLYPHVIEWER_PLAYBACKOPTIONS_H
 #define OSGGLYPHVIEWER_PLAYBACKOPTIONS_H 1
 
+#include <osgGlyphsData/FramePlayer>
 #include <osgGlyphsData/FrameSource>
 
 #include <osg/ApplicationUsage>
@@ -31,5 +32,9 @@ void describePlaybackOptions(osg::ApplicationUsage& usage);
 
 /** Reads the options above; false with a one-line error on a bad value. */
 bool readPlaybackOptions(osg::ArgumentParser& arguments, PlaybackOptions& options, std::string& error);
+
+/** Sets a player's rate, sub-frames, step and loop as the options ask, and its errors to go to the
+ * console. */
+void applyPlaybackOptions(const PlaybackOptions& options, osgGlyphsData::FramePlayer& player);
 
 #endif

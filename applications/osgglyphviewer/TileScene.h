@@ -5,7 +5,7 @@
 
 #include "ViewerScene.h"
 
-/** Whether the file is a tile archive (.osga). */
+/** Whether the file is a tile archive (.osga) or a series of them (its index, .osgt or .osgb). */
 bool isTileArchive(const std::string& file);
 
 /** The root of a tile archive, paged by the viewer's DatabasePager, with the colour key of its

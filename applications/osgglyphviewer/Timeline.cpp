@@ -165,8 +165,7 @@ std::string describePlayback(const osgGlyphsData::FramePlayer& player)
     return line;
 }
 
-Timeline::Timeline(osgGlyphsData::FramePlayer* player, osg::Camera* reference,
-                   const osg::Vec4& background)
+Timeline::Timeline(osgGlyphsData::FramePlayer* player, osg::Camera* reference, const osg::Vec4& background)
     : _player(player), _hud(createHudCamera("osgglyphviewer timeline")), _reference(reference)
 {
     osg::ref_ptr<FollowPlayer> follow = new FollowPlayer(player, reference, background);

@@ -126,16 +126,11 @@ osg::ref_ptr<ViewerScene> createTrajectoryScene(const ViewerOptions& options, st
     osg::ref_ptr<osgGlyphsData::TrajectoryPlayer> player =
         new osgGlyphsData::TrajectoryPlayer(cache.get(), mapper, cloud.get());
     const PlaybackOptions& playback = options.playback;
-    player->setFramesPerSecond(playback.framesPerSecond);
-    player->setSubframes(playback.subframes);
-    player->setStep(playback.step);
-    player->setLoop(playback.loop);
+    applyPlaybackOptions(playback, *player);
     osgGlyphsData::FrameInterpolationOptions interpolation;
     if (playback.smooth)
         interpolation.method = osgGlyphsData::FrameInterpolationOptions::Method::Smooth;
     player->setInterpolation(interpolation);
-    player->setErrorHandler([](const std::string& message)
-                            { std::cerr << PROGRAM << ": " << message << std::endl; });
 
     // One group holds the cloud for every frame; the player edits the cloud in its update callback.
     osg::ref_ptr<osg::Group> group = new osg::Group;

@@ -23,6 +23,9 @@
 /** The program's name in messages. */
 extern const char* const PROGRAM;
 
+/** The longest wait for paged tiles before a picture is written anyway. */
+const double PAGING_TIMEOUT_SECONDS = 120.0;
+
 /** The clip planes --clip may give: OSG's and every GL implementation's (GL_MAX_CLIP_PLANES >= 8). */
 extern const unsigned int MAX_CLIP_PLANES;
 

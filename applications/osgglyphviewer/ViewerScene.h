@@ -6,8 +6,8 @@
 #include "ViewerOptions.h"
 
 #include <osgGlyphs/GlyphCloud>
-#include <osgGlyphsData/GlyphMapping>
 #include <osgGlyphsData/FramePlayer>
+#include <osgGlyphsData/GlyphMapping>
 
 #include <osg/Camera>
 #include <osg/ClipNode>

@@ -51,7 +51,7 @@ endfunction()
 # Every third frame of the gzip file, its archives named by the frame's number; each holds its
 # frame (its clouds are named after the frame's timestep).
 run_in(gz "${CONVERT}" ${DUMP}.gz --frame-range 0:10:5 ${MAPPING} out%04d.osga)
-if(NOT result EQUAL 0 OR NOT err MATCHES "wrote 3 frames to out%04d.osga: 1500 glyphs, [0-9.]+ MB in [0-9.]+ s \\([0-9.e+-]+ M glyph-frames/s\\)")
+if(NOT result EQUAL 0 OR NOT err MATCHES "wrote 3 frames to out%04d.osga: 1500 glyph-frames, [0-9.]+ MB \\([0-9.]+ bytes per glyph-frame\\) in [0-9.]+ s \\([0-9.e+-]+ M glyph-frames/s\\)")
     message(FATAL_ERROR "the conversion of frames 0, 5 and 10 failed")
 endif()
 expect_files(gz out0000.osga out0005.osga out0010.osga)

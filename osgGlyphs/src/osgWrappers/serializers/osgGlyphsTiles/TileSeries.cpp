@@ -1,0 +1,103 @@
+#include <osgGlyphsTiles/TileSeries>
+
+#include <osgDB/InputStream>
+#include <osgDB/ObjectWrapper>
+#include <osgDB/OutputStream>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using osgGlyphsTiles::TileSeries;
+
+namespace
+{
+
+/** More frames than this in an index is a corrupt file, not a series. */
+const unsigned int MAX_FRAMES = 100000000u;
+
+}
+
+static bool checkFrames(const TileSeries&)
+{
+    return true;
+}
+
+// The frames' files are relative to the index file's folder, which reading makes the series'
+// database path (as osg::PagedLOD's serializer does).
+static bool readFrames(osgDB::InputStream& is, TileSeries& series)
+{
+    unsigned int count = 0;
+    is >> count;
+    if (count > MAX_FRAMES)
+    {
+        is.throwException("osgGlyphs: TileSeries: " + std::to_string(count) +
+                          " frames: the index is corrupt");
+        return false;
+    }
+    is >> is.BEGIN_BRACKET;
+    std::vector<TileSeries::Frame> frames;
+    for (unsigned int i = 0; i < count && !is.getException(); ++i)
+    {
+        TileSeries::Frame frame;
+        is.readWrappedString(frame.file);
+        is >> frame.timestep;
+        if (frame.file.empty() || !std::isfinite(frame.timestep))
+        {
+            is.throwException("osgGlyphs: TileSeries: frame " + std::to_string(i) +
+                              ": no file, or a timestep that is not a number");
+            return false;
+        }
+        frames.push_back(frame);
+    }
+    is >> is.END_BRACKET;
+    series.setFrames(frames);
+    const osgDB::Options* options = is.getOptions();
+    if (series.getDatabasePath().empty() && options && !options->getDatabasePathList().empty())
+        series.setDatabasePath(options->getDatabasePathList().front());
+    return true;
+}
+
+static bool writeFrames(osgDB::OutputStream& os, const TileSeries& series)
+{
+    const std::vector<TileSeries::Frame>& frames = series.getFrames();
+    os << static_cast<unsigned int>(frames.size()) << os.BEGIN_BRACKET << std::endl;
+    for (const TileSeries::Frame& frame : frames)
+    {
+        os.writeWrappedString(frame.file);
+        os << frame.timestep << std::endl;
+    }
+    os << os.END_BRACKET << std::endl;
+    return true;
+}
+
+static bool checkGlyphBudget(const TileSeries&)
+{
+    return true;
+}
+
+static bool readGlyphBudget(osgDB::InputStream& is, TileSeries& series)
+{
+    double budget = 0.0;
+    is >> budget;
+    series.setGlyphBudget(budget >= 0.0 && budget <= 1e15 ? static_cast<std::size_t>(budget) : 0);
+    return true;
+}
+
+static bool writeGlyphBudget(osgDB::OutputStream& os, const TileSeries& series)
+{
+    if (os.isBinary())
+        os << static_cast<double>(series.getGlyphBudget());
+    else
+        os << std::to_string(series.getGlyphBudget());
+    os << std::endl;
+    return true;
+}
+
+// Not an osg::Group in the file: the child is the frame shown, read from its archive.
+REGISTER_CUSTOM_OBJECT_WRAPPER(osgGlyphs, osgGlyphsTiles_TileSeries, new osgGlyphsTiles::TileSeries,
+                               osgGlyphsTiles::TileSeries, "osg::Object osg::Node osgGlyphsTiles::TileSeries")
+{
+    ADD_USER_SERIALIZER(Frames);
+    ADD_USER_SERIALIZER(GlyphBudget);
+}
