@@ -4,7 +4,7 @@
 #include <osgGlyphsTiles/TileChecksum>
 
 #include <osgDB/FileUtils>
-#include <osgDB/ReadFile>
+#include <osgDB/Registry>
 
 #include <algorithm>
 
@@ -91,10 +91,14 @@ TileFrameLoader::Result TileFrameLoader::load(std::size_t frame, const std::stri
     }
     if (!findTileSerializers(result.error))
         return result;
-    osg::ref_ptr<osg::Node> node = osgDB::readRefNodeFile(path);
+    // Through the Registry, which returns what went wrong instead of printing it.
+    osgDB::Registry* registry = osgDB::Registry::instance();
+    osgDB::ReaderWriter::ReadResult read = registry->readNode(path, registry->getOptions());
+    osg::ref_ptr<osg::Node> node = read.getNode();
     if (!node)
     {
-        result.error = path + ": not an OSG archive of glyph tiles (osgDB cannot read it)";
+        result.error = path + ": not an OSG archive of glyph tiles (osgDB cannot read it" +
+                       (read.message().empty() ? std::string() : ": " + read.message()) + ")";
         return result;
     }
     std::string error;

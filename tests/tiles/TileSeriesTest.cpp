@@ -1,0 +1,274 @@
+// Series of tile archives (TileSeries, TileSeriesPlayer): every frame paged in to its finest level
+// renders exactly as a flat GlyphCloud of that frame; a frame change never leaves holes while the
+// new frame pages in; the next frame is prefetched; a corrupt or missing frame is reported once and
+// the others play; frames let go close their archives.
+
+#include "RenderHarness.h"
+
+#include <osgGlyphsData/RandomCloud>
+#include <osgGlyphsTiles/TileBuilder>
+#include <osgGlyphsTiles/TileSeries>
+#include <osgGlyphsTiles/TileSeriesPlayer>
+
+#include <osgDB/Archive>
+#include <osgDB/DatabasePager>
+#include <osgDB/ReadFile>
+#include <osgDB/Registry>
+#include <osgDB/WriteFile>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+using namespace osgGlyphsTest;
+using osgGlyphs::GlyphCloud;
+
+namespace
+{
+
+const int SIZE = 320;
+
+/** Frame k of a series: its own random glyphs (another seed). */
+osg::ref_ptr<GlyphCloud> frameCloud(unsigned int frame, unsigned int count, float radius)
+{
+    osgGlyphsData::RandomCloudOptions options;
+    options.count = count;
+    options.radius = radius;
+    options.seed = 11 + frame;
+    return osgGlyphsData::createRandomCloud(options);
+}
+
+std::string framePath(const std::string& name, unsigned int frame)
+{
+    return outputPath(name + "_" + std::to_string(frame) + ".osga");
+}
+
+/** Writes frames' archives and their index (name.osgt), and reads the index back as osgDB does. */
+osg::ref_ptr<osgGlyphsTiles::TileSeries> writeSeries(const std::string& name,
+                                                     const std::vector<osg::ref_ptr<GlyphCloud>>& clouds,
+                                                     bool compressedPositions)
+{
+    osgGlyphsTiles::TileOptions options;
+    options.maxGlyphsPerTile = 1500;
+    options.cellsPerAxis = 8;
+    options.compressedPositions = compressedPositions;
+    osg::ref_ptr<osgGlyphsTiles::TileSeries> series = new osgGlyphsTiles::TileSeries;
+    for (unsigned int frame = 0; frame < clouds.size(); ++frame)
+    {
+        osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder =
+            new osgGlyphsTiles::TileBuilder(*clouds[frame], options);
+        std::string error;
+        EXPECT_TRUE(builder->addGlyphs(*clouds[frame], error)) << error;
+        EXPECT_TRUE(builder->write(framePath(name, frame), error)) << error;
+        // Relative to the index's folder.
+        series->addFrame(std::filesystem::path(framePath(name, frame)).filename().string(), 100.0 * frame);
+    }
+    const std::string index = outputPath(name + ".osgt");
+    EXPECT_TRUE(osgDB::writeNodeFile(*series, index));
+    return dynamic_cast<osgGlyphsTiles::TileSeries*>(osgDB::readNodeFile(index));
+}
+
+void lookAtTheUnitCube(Renderer& renderer)
+{
+    renderer.setPerspective(30.0, 0.1, 10.0);
+    renderer.setLookAt(osg::Vec3d(1.9, -1.2, 1.4), osg::Vec3d(0.5, 0.5, 0.5), osg::Vec3d(0.0, 0.0, 1.0));
+}
+
+int countDifferences(const Frame& a, const Frame& b)
+{
+    int differing = 0;
+    for (int y = 0; y < SIZE; ++y)
+        for (int x = 0; x < SIZE; ++x)
+            differing += a.colorAt(x, y) != b.colorAt(x, y) || a.depthAt(x, y) != b.depthAt(x, y);
+    return differing;
+}
+
+bool pagerIsBusy(osgDB::DatabasePager& pager)
+{
+    return pager.getRequestsInProgress() || pager.getFileRequestListSize() > 0 ||
+           pager.getDataToMergeListSize() > 0;
+}
+
+/** Renders frames until the series shows frame and the pager is idle; every picture in during. */
+Frame playUntilShown(Renderer& renderer, osgGlyphsTiles::TileSeries& series, std::size_t frame,
+                     std::vector<Frame>& during)
+{
+    osgViewer::Viewer* viewer = renderer.getViewer();
+    osgDB::DatabasePager* pager = viewer->getDatabasePager();
+    for (int frames = 0; frames < 4000 && (series.getShownFrame() != frame || pagerIsBusy(*pager)); ++frames)
+    {
+        viewer->frame();
+        during.push_back(renderer.capture());
+        if (pager->getDataToMergeListSize() == 0)
+            OpenThreads::Thread::microSleep(2000);
+    }
+    viewer->frame();
+    return renderer.capture();
+}
+
+}
+
+// Float positions: a frame's finest level holds its glyphs exactly as given. The index is written
+// and read back through osgDB, and names the frames relative to its folder.
+TEST(TileSeries, EveryFrameAtFullDetailIsItsFlatCloud)
+{
+    std::vector<osg::ref_ptr<GlyphCloud>> clouds;
+    for (unsigned int frame = 0; frame < 3; ++frame)
+        clouds.push_back(frameCloud(frame, 20000, 0.008f));
+    osg::ref_ptr<osgGlyphsTiles::TileSeries> series = writeSeries("series_full", clouds, false);
+    ASSERT_TRUE(series.valid()) << "the index read back";
+    ASSERT_EQ(series->getNumFrames(), 3u);
+    EXPECT_EQ(series->getFrames()[2].timestep, 200.0);
+    osg::ref_ptr<osgGlyphsTiles::TileSeriesPlayer> player =
+        new osgGlyphsTiles::TileSeriesPlayer(series.get());
+    series->setUpdateCallback(player.get());
+    std::vector<Frame> flats;
+    for (unsigned int frame = 0; frame < 3; ++frame)
+    {
+        std::string error;
+        ASSERT_TRUE(player->showNow(frame, error)) << error;
+        EXPECT_EQ(series->getShownFrame(), frame);
+        EXPECT_EQ(player->getTimestep(), 100.0 * frame);
+        Renderer flatRenderer(SIZE, SIZE), pagedRenderer(SIZE, SIZE);
+        lookAtTheUnitCube(flatRenderer);
+        lookAtTheUnitCube(pagedRenderer);
+        flats.push_back(flatRenderer.render(clouds[frame].get()));
+        int frames = 0;
+        const Frame paged = renderPaged(pagedRenderer, series.get(), frames);
+        saveFrame(paged, "series_full_" + std::to_string(frame));
+        EXPECT_GT(frames, 2) << "frame " << frame << ": the tiles were not paged in";
+        EXPECT_EQ(countDifferences(paged, flats.back()), 0) << "frame " << frame << ": pixels that differ";
+    }
+    EXPECT_GT(countDifferences(flats[0], flats[1]), SIZE * SIZE / 10) << "the frames differ";
+}
+
+// From frame 0 paged in, the player goes to frame 2 (not prefetched: frame 1 is). Until frame 2's
+// root tile is in, frame 0 stays drawn; then frame 2's coarse level, refined as its tiles arrive. A
+// hole: a block of 16x16 pixels that the settled frame 2 covers (almost) wholly, and that a picture
+// on the way leaves wholly uncovered.
+TEST(TileSeries, AFrameChangeNeverLeavesHoles)
+{
+    const float dense = 0.4f * std::cbrt(1.0f / 20000.0f);
+    std::vector<osg::ref_ptr<GlyphCloud>> clouds;
+    for (unsigned int frame = 0; frame < 3; ++frame)
+        clouds.push_back(frameCloud(frame, 20000, dense));
+    osg::ref_ptr<osgGlyphsTiles::TileSeries> series = writeSeries("series_holes", clouds, true);
+    ASSERT_TRUE(series.valid());
+    osg::ref_ptr<osgGlyphsTiles::TileSeriesPlayer> player =
+        new osgGlyphsTiles::TileSeriesPlayer(series.get());
+    series->setUpdateCallback(player.get());
+    Renderer renderer(SIZE, SIZE);
+    lookAtTheUnitCube(renderer);
+    renderer.getViewer()->setSceneData(series.get());
+    std::vector<Frame> before, during;
+    playUntilShown(renderer, *series, 0, before);
+    player->seek(2.0);
+    const Frame settled = playUntilShown(renderer, *series, 2, during);
+    saveFrame(settled, "series_holes_settled");
+    ASSERT_FALSE(during.empty());
+    saveFrame(during.front(), "series_holes_first");
+    EXPECT_GE(during.size(), 3u) << "frame 2's tiles were paged in after the change";
+    EXPECT_GE(player->getStatistics().late, 1u) << "the change waited for frame 2's root";
+    const int BLOCK = 16;
+    int holes = 0, blocks = 0;
+    const auto coveredIn = [BLOCK](const Frame& frame, int bx, int by)
+    {
+        int covered = 0;
+        for (int y = by; y < by + BLOCK; ++y)
+            for (int x = bx; x < bx + BLOCK; ++x)
+                covered += frame.isCovered(x, y);
+        return covered;
+    };
+    for (int by = 0; by + BLOCK <= SIZE; by += BLOCK)
+        for (int bx = 0; bx + BLOCK <= SIZE; bx += BLOCK)
+        {
+            if (coveredIn(settled, bx, by) < BLOCK * BLOCK * 9 / 10)
+                continue;
+            ++blocks;
+            for (const Frame& frame : during)
+                holes += coveredIn(frame, bx, by) == 0;
+        }
+    ASSERT_GT(blocks, 60);
+    EXPECT_EQ(holes, 0) << "of " << blocks << " covered blocks, over " << during.size() << " pictures";
+}
+
+// Once frame 0 is in, frame 1 (the next of playback) is read ahead with its tiles in view: the step
+// to it pages nothing in, and its first picture is already the full one.
+TEST(TileSeries, TheNextFrameIsPrefetchedWithItsTilesInView)
+{
+    std::vector<osg::ref_ptr<GlyphCloud>> clouds;
+    for (unsigned int frame = 0; frame < 2; ++frame)
+        clouds.push_back(frameCloud(frame, 20000, 0.008f));
+    osg::ref_ptr<osgGlyphsTiles::TileSeries> series = writeSeries("series_prefetch", clouds, false);
+    ASSERT_TRUE(series.valid());
+    osg::ref_ptr<osgGlyphsTiles::TileSeriesPlayer> player =
+        new osgGlyphsTiles::TileSeriesPlayer(series.get());
+    series->setUpdateCallback(player.get());
+    Renderer renderer(SIZE, SIZE), flatRenderer(SIZE, SIZE);
+    lookAtTheUnitCube(renderer);
+    lookAtTheUnitCube(flatRenderer);
+    renderer.getViewer()->setSceneData(series.get());
+    std::vector<Frame> before;
+    playUntilShown(renderer, *series, 0, before);
+    EXPECT_EQ(series->getPrefetchFrame(), 1u);
+    const uint64_t late = player->getStatistics().late; // frame 0's first read
+    player->seek(1.0);
+    renderer.getViewer()->frame();
+    ASSERT_EQ(series->getShownFrame(), 1u) << "frame 1's root was read ahead";
+    EXPECT_FALSE(pagerIsBusy(*renderer.getViewer()->getDatabasePager())) << "tiles left to page in";
+    const Frame first = renderer.capture();
+    saveFrame(first, "series_prefetch_first");
+    EXPECT_EQ(countDifferences(first, flatRenderer.render(clouds[1].get())), 0)
+        << "the first picture of frame 1 is not its full detail";
+    EXPECT_EQ(player->getStatistics().late, late);
+}
+
+// Frame 1's archive cut short, frame 2's missing: each is one message naming its file, once, even
+// over two loops; frames 0 and 3 play. Frames let go are closed (out of osgDB's archive cache).
+TEST(TileSeries, ACorruptOrMissingFrameIsReportedOnceAndTheOthersPlay)
+{
+    std::vector<osg::ref_ptr<GlyphCloud>> clouds;
+    for (unsigned int frame = 0; frame < 4; ++frame)
+        clouds.push_back(frameCloud(frame, 3000, 0.01f));
+    osg::ref_ptr<osgGlyphsTiles::TileSeries> series = writeSeries("series_corrupt", clouds, true);
+    ASSERT_TRUE(series.valid());
+    std::filesystem::resize_file(framePath("series_corrupt", 1), 200);
+    std::filesystem::remove(framePath("series_corrupt", 2));
+    osg::ref_ptr<osgGlyphsTiles::TileSeriesPlayer> player =
+        new osgGlyphsTiles::TileSeriesPlayer(series.get());
+    std::vector<std::string> errors;
+    player->setErrorHandler([&errors](const std::string& error) { errors.push_back(error); });
+    series->setUpdateCallback(player.get());
+    player->setFramesPerSecond(1000.0);
+    player->setPlaying(true);
+    Renderer renderer(SIZE, SIZE);
+    lookAtTheUnitCube(renderer);
+    renderer.getViewer()->setSceneData(series.get());
+    std::vector<std::size_t> shown;
+    for (int frames = 0; frames < 3000 && player->getStatistics().shown < 6; ++frames)
+    {
+        renderer.getViewer()->frame();
+        if (series->getShownFrame() != SIZE_MAX && (shown.empty() || shown.back() != series->getShownFrame()))
+            shown.push_back(series->getShownFrame());
+        OpenThreads::Thread::microSleep(1000);
+    }
+    EXPECT_GE(player->getStatistics().shown, 6u) << "playback went on past the failed frames";
+    for (std::size_t frame : shown)
+        EXPECT_TRUE(frame == 0 || frame == 3) << "frame " << frame << " shown";
+    ASSERT_EQ(errors.size(), 2u);
+    EXPECT_NE(errors[0].find("series_corrupt_1.osga: not an OSG archive of glyph tiles"), std::string::npos)
+        << errors[0];
+    EXPECT_NE(errors[1].find("series_corrupt_2.osga: no such file"), std::string::npos) << errors[1];
+    for (const std::string& error : errors)
+        EXPECT_EQ(error.find('\n'), std::string::npos) << "one line: " << error;
+    std::string error;
+    EXPECT_TRUE(series->getFrameError(1, error));
+    EXPECT_FALSE(series->getFrameError(3, error));
+    const std::size_t other = series->getShownFrame() == 0 ? 3 : 0;
+    EXPECT_FALSE(osgDB::Registry::instance()->getRefFromArchiveCache(series->getFramePath(other)).valid() &&
+                 series->getPrefetchFrame() != other)
+        << "frame " << other << "'s archive is still open";
+}
