@@ -140,6 +140,7 @@ TEST(TileSeries, EveryFrameAtFullDetailIsItsFlatCloud)
         const Frame paged = renderPaged(pagedRenderer, series.get(), frames);
         saveFrame(paged, "series_full_" + std::to_string(frame));
         EXPECT_GT(frames, 2) << "frame " << frame << ": the tiles were not paged in";
+        EXPECT_EQ(series->getShownRoot(), series->getChild(0)) << "frame " << frame << " read twice";
         EXPECT_EQ(countDifferences(paged, flats.back()), 0) << "frame " << frame << ": pixels that differ";
     }
     EXPECT_GT(countDifferences(flats[0], flats[1]), SIZE * SIZE / 10) << "the frames differ";

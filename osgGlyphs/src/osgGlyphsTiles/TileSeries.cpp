@@ -138,6 +138,8 @@ void TileSeries::collectLoaded()
             _failed[result.frame] = result.error;
             continue;
         }
+        if (_loaded.count(result.frame))
+            continue; // read meanwhile on the caller's thread (showFrameNow())
         if (result.frame != _wanted && result.frame != _prefetch && result.frame != _shown)
         {
             closeArchive(getFramePath(result.frame)); // no longer wanted
@@ -179,7 +181,7 @@ bool TileSeries::display(std::size_t frame)
     return true;
 }
 
-TileSeries::FrameState TileSeries::showFrame(std::size_t frame, std::string& error)
+TileSeries::FrameState TileSeries::findFrame(std::size_t frame, std::string& error)
 {
     if (frame >= _frames.size())
     {
@@ -191,15 +193,20 @@ TileSeries::FrameState TileSeries::showFrame(std::size_t frame, std::string& err
     if (getFrameError(frame, error))
         return FRAME_FAILED;
     _wanted = frame;
-    if (display(frame))
-        return FRAME_SHOWN;
-    _loader->request(frame, getFramePath(frame));
-    return FRAME_PENDING;
+    return display(frame) ? FRAME_SHOWN : FRAME_PENDING;
+}
+
+TileSeries::FrameState TileSeries::showFrame(std::size_t frame, std::string& error)
+{
+    const FrameState state = findFrame(frame, error);
+    if (state == FRAME_PENDING)
+        _loader->request(frame, getFramePath(frame));
+    return state;
 }
 
 TileSeries::FrameState TileSeries::showFrameNow(std::size_t frame, std::string& error)
 {
-    const FrameState state = showFrame(frame, error);
+    const FrameState state = findFrame(frame, error);
     if (state != FRAME_PENDING)
         return state;
     detail::TileFrameLoader::Result result = detail::TileFrameLoader::load(frame, getFramePath(frame));
