@@ -132,8 +132,8 @@ void describeOptions(osg::ApplicationUsage& usage)
         "pattern with the frame's number (out%04d.osga: out0000.osga, out0010.osga, ..): the archive "
         "--frame would write of it, except that the colour range (over 8 frames spread over the file), "
         "radius and length scale (of its first frame) are the same in every archive, so that one colour "
-        "means one value throughout; --range, --radius and --length-scale fix them. Each frame must fit "
-        "in --memory-glyphs. A frame that fails is reported and skipped, the others converted, and the "
+        "means one value throughout; --range, --radius and --length-scale fix them. A frame larger than "
+        "--memory-glyphs is sorted through temporary files, as a large file is. A frame that fails is reported and skipped, the others converted, and the "
         "exit code is 1.");
     usage.addCommandLineOption("--random <n>", "Instead of a file, n random glyphs in the unit cube with "
                                                "scalars in [0,1) (as osgglyphviewer --random).");
@@ -613,26 +613,6 @@ struct Trajectory
     std::future<DecodedFrame> first;
 };
 
-/** Fails on the first of the frames converted with more points than the glyphs held in memory: a
- * frame of a trajectory is decoded and converted whole. */
-bool checkFrameSizes(const ConvertOptions& options, const Trajectory& trajectory, std::string& error)
-{
-    const std::size_t most = options.tiles.maxGlyphsInMemory;
-    for (std::size_t frame : trajectory.frames)
-    {
-        const uint64_t points = trajectory.source->getFrameInfo(frame).points;
-        if (points > most)
-        {
-            error = options.input + ": frame " + std::to_string(frame) + " has " + std::to_string(points) +
-                    " points, more than --memory-glyphs " + std::to_string(most) +
-                    ": raise it, or convert that frame alone with --frame from the uncompressed file, "
-                    "which is read in parts";
-            return false;
-        }
-    }
-    return true;
-}
-
 /** Opens the input as a trajectory, indexes its frames, lists those converted, starts decoding the
  * first of them and prepares the mapping of them all over SAMPLE_FRAMES frames spread over the file
  * (sampleFrames()), so that colour range, radius and length scale are the same in every frame's
@@ -655,7 +635,7 @@ bool openTrajectory(const ConvertOptions& options, ConvertProgress& progress, Tr
     trajectory.source->waitForIndex();
     progress.finish();
     trajectory.frames = listFrames(options.frames, options.input, trajectory.source->getNumFrames(), error);
-    if (trajectory.frames.empty() || !checkFrameSizes(options, trajectory, error))
+    if (trajectory.frames.empty())
         return false;
     trajectory.first = decodeLater(*trajectory.source, trajectory.frames[0]);
     trajectory.mapper.setCulling(osgGlyphs::GlyphCulling::Off); // its clouds only carry the glyphs

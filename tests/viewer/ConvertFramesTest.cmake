@@ -104,8 +104,17 @@ expect_failure(gz 2 "--frame and --frame-range do not combine" "${CONVERT}" ${DU
     out%d.osga)
 expect_failure(gz 2 "out%s.osga: the output's pattern takes one integer conversion" "${CONVERT}" ${DUMP}.gz
     --frame-range 0:2 out%s.osga)
-expect_failure(gz 1 "${DUMP}.gz: frame 0 has 500 points, more than --memory-glyphs 100" "${CONVERT}" ${DUMP}.gz
-    --frame-range 0:2 --memory-glyphs 100 out%d.osga)
+
+# Frames larger than --memory-glyphs are sorted through temporary files: the same archives, byte for
+# byte.
+run_in(gz "${CONVERT}" ${DUMP}.gz --frame-range 0:10:5 ${MAPPING} --memory-glyphs 100 small%04d.osga)
+foreach(number 0000 0005 0010)
+    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK_DIR}/gz/small${number}.osga"
+        "${WORK_DIR}/gz/out${number}.osga" RESULT_VARIABLE different)
+    if(NOT result EQUAL 0 OR different)
+        message(FATAL_ERROR "small${number}.osga, converted 100 glyphs at a time, is not out${number}.osga")
+    endif()
+endforeach()
 
 # A row of frame 3 (lines 1528 to 2036) damaged: that frame fails with a line naming it, the file
 # and the line; the others are converted; the exit code is 1.
@@ -126,6 +135,43 @@ endif()
 expect_files(plain broken00.osga broken02.osga broken04.osga broken10.osga)
 if(EXISTS "${WORK_DIR}/plain/broken03.osga")
     message(FATAL_ERROR "broken03.osga was written")
+endif()
+
+# A series: the frames' archives (those of the pattern, byte for byte) and their index, which the
+# viewer plays: its frame 10 is out0010.osga's picture, pixel for pixel.
+run_in(gz "${CONVERT}" ${DUMP}.gz --frame-range 0:10:5 ${MAPPING} series.osgt)
+if(NOT result EQUAL 0 OR NOT err MATCHES "wrote 3 frames to series.osgt: 1500 glyph-frames")
+    message(FATAL_ERROR "the series was not written")
+endif()
+foreach(number 0000 0005 0010)
+    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK_DIR}/gz/series_00${number}.osga"
+        "${WORK_DIR}/gz/out${number}.osga" RESULT_VARIABLE different)
+    if(different)
+        message(FATAL_ERROR "series_00${number}.osga is not out${number}.osga")
+    endif()
+endforeach()
+file(READ "${WORK_DIR}/gz/series.osgt" index)
+if(NOT index MATCHES "osgGlyphsTiles::TileSeries" OR NOT index MATCHES "Frames 3 {[ \n]*\"series_000000.osga\" 0[ \n]*\"series_000005.osga\" 100[ \n]*\"series_000010.osga\" 200")
+    message(FATAL_ERROR "series.osgt does not list the frames:\n${index}")
+endif()
+expect_failure(gz 2 "out%d.osgt: a series' index is one file" "${CONVERT}" ${DUMP}.gz --frame-range 0:2 out%d.osgt)
+run_in(gz "${VIEWER}" series.osgt --frame 2 --offscreen --size 320 240 --output series.osgt.png)
+if(NOT result EQUAL 0 OR NOT out MATCHES "paged in")
+    message(FATAL_ERROR "the viewer did not page the series' frame 2 in")
+endif()
+run_in(gz "${VIEWER}" out0010.osga --offscreen --size 320 240 --output out0010.osga.png)
+run_in(gz "${CHECK}" match series.osgt.png out0010.osga.png 0 0)
+if(NOT result EQUAL 0)
+    message(FATAL_ERROR "the series' frame 2 is not out0010.osga")
+endif()
+# Pictures of every frame of the series, and a frame past its end.
+run_in(gz "${VIEWER}" series.osgt --frame-range 0: --offscreen --size 160 120 --output series%d.png)
+if(NOT result EQUAL 0 OR NOT EXISTS "${WORK_DIR}/gz/series2.png" OR EXISTS "${WORK_DIR}/gz/series3.png")
+    message(FATAL_ERROR "the series' pictures were not written")
+endif()
+run_in(gz "${VIEWER}" series.osgt --frame 3 --offscreen --size 160 120 --output none.png)
+if(NOT result EQUAL 1 OR NOT err MATCHES "--frame 3: series.osgt has 3 frames, counted from 0")
+    message(FATAL_ERROR "--frame 3 of a series of 3 frames did not fail")
 endif()
 
 # The viewer renders the archives: the lattice of frame 0, the melt of frame 10.
