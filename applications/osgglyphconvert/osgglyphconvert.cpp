@@ -130,10 +130,12 @@ void describeOptions(osg::ApplicationUsage& usage)
         "--frame-range <a:b[:step]>",
         "Frames a to b (a: to the last), every step-th, each into an archive named by the output as a "
         "pattern with the frame's number (out%04d.osga: out0000.osga, out0010.osga, ..): the archive "
-        "--frame would write of it, except that the colour range (over 8 frames spread over the file), "
+        "--frame would write of it, except that the colour range (over 8 frames spread over the file, fewer "
+        "when their points pass --memory-glyphs), "
         "radius and length scale (of its first frame) are the same in every archive, so that one colour "
         "means one value throughout; --range, --radius and --length-scale fix them. A frame larger than "
-        "--memory-glyphs is sorted through temporary files, as a large file is. A frame that fails is reported and skipped, the others converted, and the "
+        "--memory-glyphs is sorted through temporary files, as a large file is. A frame that fails is "
+        "reported and skipped, the others converted, and the "
         "exit code is 1.");
     usage.addCommandLineOption("--random <n>", "Instead of a file, n random glyphs in the unit cube with "
                                                "scalars in [0,1) (as osgglyphviewer --random).");
@@ -613,10 +615,19 @@ struct Trajectory
     std::future<DecodedFrame> first;
 };
 
+/** The frames the mapping is prepared over: SAMPLE_FRAMES, fewer where their points together would
+ * pass --memory-glyphs (at least one). */
+std::size_t countSampleFrames(const ConvertOptions& options, const osgGlyphsData::FrameSource& source)
+{
+    const uint64_t points = std::max<uint64_t>(source.getFrameInfo(0).points, 1);
+    return static_cast<std::size_t>(
+        std::clamp<uint64_t>(options.tiles.maxGlyphsInMemory / points, 1, SAMPLE_FRAMES));
+}
+
 /** Opens the input as a trajectory, indexes its frames, lists those converted, starts decoding the
- * first of them and prepares the mapping of them all over SAMPLE_FRAMES frames spread over the file
- * (sampleFrames()), so that colour range, radius and length scale are the same in every frame's
- * archive. */
+ * first of them and prepares the mapping of them all over countSampleFrames() frames spread over
+ * the file (sampleFrames()), so that colour range, radius and length scale are the same in every
+ * frame's archive. */
 bool openTrajectory(const ConvertOptions& options, ConvertProgress& progress, Trajectory& trajectory,
                     std::string& error)
 {
@@ -639,9 +650,16 @@ bool openTrajectory(const ConvertOptions& options, ConvertProgress& progress, Tr
         return false;
     trajectory.first = decodeLater(*trajectory.source, trajectory.frames[0]);
     trajectory.mapper.setCulling(osgGlyphs::GlyphCulling::Off); // its clouds only carry the glyphs
-    if (!trajectory.mapper.prepare(*osgGlyphsData::sampleFrames(*trajectory.source, SAMPLE_FRAMES), 0, error))
+    const std::size_t samples = countSampleFrames(options, *trajectory.source);
+    if (!trajectory.mapper.prepare(*osgGlyphsData::sampleFrames(*trajectory.source, samples), 0, error))
         return false;
     std::cerr << PROGRAM << ": " << trajectory.mapper.describe() << std::endl;
+    if (samples < SAMPLE_FRAMES && trajectory.source->getNumFrames() > samples &&
+        trajectory.mapper.getColorKey().kind == osgGlyphsData::ColorKey::Scalar)
+        std::cerr << PROGRAM << ": the colour range is taken over " << samples << " frame"
+                  << (samples == 1 ? "" : "s") << ", all that --memory-glyphs "
+                  << options.tiles.maxGlyphsInMemory << " holds of frames of "
+                  << trajectory.source->getFrameInfo(0).points << " points; --range fixes it" << std::endl;
     return true;
 }
 

@@ -30,7 +30,7 @@ ls -l "$DCD"
 cat "$DCD" >/dev/null # from the page cache: the converter's time, not the disk's
 rm -f "$DATA"/series*.osga "$DATA/series.osgt"
 /usr/bin/time -f "osgglyphconvert: %e s, peak memory %M KB" \
-    "$CONVERT" --frame-range 0: --radius "$RADIUS" --memory-glyphs "$PARTICLES" "$DCD" "$DATA/series.osgt"
+    "$CONVERT" --frame-range 0: --radius "$RADIUS" "$DCD" "$DATA/series.osgt"
 du -cb "$DATA"/series_*.osga | tail -1
 "$BENCH" play "$DATA/series.osgt" --rounds "$ROUNDS" --renders "$RENDERS"
 "$BENCH" play "$DATA/series.osgt" --rounds "$ROUNDS" --renders "$RENDERS" --play-fps "$PLAY_FPS"
