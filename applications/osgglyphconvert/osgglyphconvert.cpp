@@ -655,7 +655,7 @@ bool openTrajectory(const ConvertOptions& options, ConvertProgress& progress, Tr
         return false;
     std::cerr << PROGRAM << ": " << trajectory.mapper.describe() << std::endl;
     if (samples < SAMPLE_FRAMES && trajectory.source->getNumFrames() > samples &&
-        trajectory.mapper.getColorKey().kind == osgGlyphsData::ColorKey::Scalar)
+        trajectory.mapper.getColorKey().kind == osgGlyphsData::ColorKey::Scalar && !options.mapping.hasRange)
         std::cerr << PROGRAM << ": the colour range is taken over " << samples << " frame"
                   << (samples == 1 ? "" : "s") << ", all that --memory-glyphs "
                   << options.tiles.maxGlyphsInMemory << " holds of frames of "

@@ -137,6 +137,12 @@ if(EXISTS "${WORK_DIR}/plain/broken03.osga")
     message(FATAL_ERROR "broken03.osga was written")
 endif()
 
+# Frames that 8 of would pass --memory-glyphs: the colour range over fewer, said in a line.
+run_in(gz "${CONVERT}" ${DUMP}.gz --frame-range 0:10:5 --memory-glyphs 1200 --radius 0.4 few%04d.osga)
+if(NOT result EQUAL 0 OR NOT err MATCHES "osgglyphconvert: the colour range is taken over 2 frames, all that --memory-glyphs 1200 holds of frames of 500 points; --range fixes it\n")
+    message(FATAL_ERROR "the colour range's frames were not fewer, or not said")
+endif()
+
 # A series: the frames' archives (those of the pattern, byte for byte) and their index, which the
 # viewer plays: its frame 10 is out0010.osga's picture, pixel for pixel.
 run_in(gz "${CONVERT}" ${DUMP}.gz --frame-range 0:10:5 ${MAPPING} series.osgt)
