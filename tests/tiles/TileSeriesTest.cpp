@@ -141,9 +141,14 @@ TEST(TileSeries, EveryFrameAtFullDetailIsItsFlatCloud)
         saveFrame(paged, "series_full_" + std::to_string(frame));
         EXPECT_GT(frames, 2) << "frame " << frame << ": the tiles were not paged in";
         EXPECT_EQ(series->getShownRoot(), series->getChild(0)) << "frame " << frame << " read twice";
+        EXPECT_TRUE(osgDB::Registry::instance()->getRefFromArchiveCache(series->getFramePath(frame)).valid())
+            << "frame " << frame << "'s archive is not cached under its path";
         EXPECT_EQ(countDifferences(paged, flats.back()), 0) << "frame " << frame << ": pixels that differ";
     }
     EXPECT_GT(countDifferences(flats[0], flats[1]), SIZE * SIZE / 10) << "the frames differ";
+    // Frame 2 shown, frame 0 prefetched (playback loops): frame 1 is let go, its archive closed.
+    EXPECT_EQ(series->getPrefetchFrame(), 0u);
+    EXPECT_FALSE(osgDB::Registry::instance()->getRefFromArchiveCache(series->getFramePath(1)).valid());
 }
 
 // From frame 0 paged in, the player goes to frame 2 (not prefetched: frame 1 is). Until frame 2's
