@@ -3,6 +3,7 @@
 // trajectories such series are converted from.
 //
 //   osgglyphseriesbench trajectory OUT.dcd [--particles n] [--frames f] [--step s]
+//   osgglyphseriesbench sizes ARCHIVE.osga
 //   osgglyphseriesbench play INDEX.osgt [--rounds r] [--renders k] [--size w h] [--glyph-budget n]
 //                                       [--play-fps p]
 //
@@ -10,22 +11,28 @@
 // its tiles in view paged in, and k renders while the series plays (at p frames a second; by default
 // as fast as it can, a new frame asked for at every render; a frame is shown once its root tile is
 // in, then refines): the ratio of the render rates, the glyphs each drew, the frames shown per
-// second, and the renders that waited for a frame. Ratios within one run, not
-// absolute times across runs; share/bench/series_bench.sh runs the whole benchmark.
+// second, and the renders that waited for a frame. sizes splits an archive's bytes into its glyphs'
+// positions, by level, their radii and scalars, and the rest (the tiles' structure, the index). Ratios within
+// one run, not absolute times across runs; share/bench/series_bench.sh runs the whole benchmark.
 
 #include "MovingTrajectory.h"
 
+#include <osgGlyphs/GlyphCloud>
 #include <osgGlyphsHeadless/OffscreenViewer>
 #include <osgGlyphsTiles/TileBuilder>
 #include <osgGlyphsTiles/TileSeries>
 #include <osgGlyphsTiles/TileSeriesPlayer>
 
 #include <osg/ArgumentParser>
+#include <osg/NodeVisitor>
+#include <osg/PagedLOD>
+#include <osgDB/Archive>
 #include <osgDB/ReadFile>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -199,6 +206,69 @@ int play(osg::ArgumentParser& arguments)
     return 0;
 }
 
+/** The glyphs of the clouds under a node, and how many bytes their positions take. */
+class GlyphCount : public osg::NodeVisitor
+{
+public:
+    GlyphCount() : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN) {}
+    void apply(osg::Drawable& drawable) override
+    {
+        if (const osgGlyphs::GlyphCloud* cloud = dynamic_cast<const osgGlyphs::GlyphCloud*>(&drawable))
+        {
+            glyphs += cloud->getNumGlyphs();
+            positionBytes += cloud->getNumGlyphs() * (cloud->getCompressedPositions() ? 6.0 : 12.0);
+            for (const osg::Array* array : {static_cast<const osg::Array*>(cloud->getRadii()),
+                                            static_cast<const osg::Array*>(cloud->getScalars())})
+                attributeBytes += array ? array->getTotalDataSize() : 0;
+        }
+    }
+    double glyphs = 0.0, positionBytes = 0.0, attributeBytes = 0.0;
+};
+
+}
+
+int sizes(osg::ArgumentParser& arguments)
+{
+    std::string error;
+    if (arguments.argc() != 3 || !osgGlyphsTiles::findTileSerializers(error))
+    {
+        std::cerr << PROGRAM << " sizes ARCHIVE.osga " << error << std::endl;
+        return 2;
+    }
+    osg::ref_ptr<osgDB::Archive> archive = osgDB::openArchive(arguments[2], osgDB::Archive::READ);
+    if (!archive)
+    {
+        std::cerr << PROGRAM << ": " << arguments[2] << ": not an OSG archive" << std::endl;
+        return 1;
+    }
+    osgDB::Archive::FileNameList files;
+    archive->getFileNames(files);
+    GlyphCount leaves, coarse; // leaf tiles hold no PagedLOD; a tile with PagedLODs holds coarse levels
+    for (const std::string& file : files)
+    {
+        osg::ref_ptr<osg::Node> node = archive->readNode(file).takeNode();
+        if (!node)
+            continue;
+        // A file holds the children of a PagedLOD: its clouds are each child's coarse level, or the
+        // leaf's glyphs where the child is a plain cloud.
+        const osg::Group* group = node->asGroup();
+        for (unsigned int i = 0; group && i < group->getNumChildren(); ++i)
+        {
+            osg::Node* child = const_cast<osg::Node*>(group->getChild(i));
+            child->accept(dynamic_cast<osg::PagedLOD*>(child) ? coarse : leaves);
+        }
+    }
+    const double bytes = double(std::filesystem::file_size(arguments[2]));
+    const double glyphs = leaves.glyphs;
+    const double attributes = leaves.attributeBytes + coarse.attributeBytes;
+    std::printf("%s: %s: %zu files, %.0f leaf glyphs, %.0f coarse (%.1f%%); %.2f bytes a leaf glyph: %.2f of "
+                "leaf positions, %.2f of coarse positions, %.2f of radii and scalars, %.2f of the rest (the "
+                "tiles' structure, the index)\n",
+                PROGRAM, arguments[2], files.size(), glyphs, coarse.glyphs, 100.0 * coarse.glyphs / glyphs,
+                bytes / glyphs, leaves.positionBytes / glyphs, coarse.positionBytes / glyphs,
+                attributes / glyphs,
+                (bytes - leaves.positionBytes - coarse.positionBytes - attributes) / glyphs);
+    return 0;
 }
 
 int main(int argc, char** argv)
@@ -209,6 +279,8 @@ int main(int argc, char** argv)
         return writeTrajectory(arguments);
     if (mode == "play")
         return play(arguments);
+    if (mode == "sizes")
+        return sizes(arguments);
     std::cerr << "usage: " << PROGRAM
               << " trajectory OUT.dcd [--particles n] [--frames f] [--step s]\n       " << PROGRAM
               << " play INDEX.osgt [--rounds r] [--renders k] [--size w h] [--glyph-budget n]" << std::endl;

@@ -32,5 +32,6 @@ rm -f "$DATA"/series*.osga "$DATA/series.osgt"
 /usr/bin/time -f "osgglyphconvert: %e s, peak memory %M KB" \
     "$CONVERT" --frame-range 0: --radius "$RADIUS" "$DCD" "$DATA/series.osgt"
 du -cb "$DATA"/series_*.osga | tail -1
+"$BENCH" sizes "$DATA/series_000000.osga"
 "$BENCH" play "$DATA/series.osgt" --rounds "$ROUNDS" --renders "$RENDERS"
 "$BENCH" play "$DATA/series.osgt" --rounds "$ROUNDS" --renders "$RENDERS" --play-fps "$PLAY_FPS"
