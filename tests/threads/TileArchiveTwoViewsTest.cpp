@@ -11,6 +11,7 @@
 #include <osgGlyphsHeadless/HeadlessContext>
 #include <osgGlyphsTiles/TileBuilder>
 #include <osgGlyphsTiles/TileRoot>
+#include <osgGlyphsTiles/TileSeriesPlayer>
 
 #include <osg/PagedLOD>
 #include <osgDB/DatabasePager>
@@ -21,6 +22,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <functional>
 #include <thread>
 
 using namespace osgGlyphsTest;
@@ -56,11 +58,12 @@ void setUpCamera(osg::Camera& camera, const TileView& view)
 }
 
 /** 20,000 spheres in 1,500-glyph tiles, written into an archive; its path. */
-std::string writeArchive()
+std::string writeArchive(const std::string& name = "tile_archive_two_views", unsigned int seed = 1)
 {
     osgGlyphsData::RandomCloudOptions random;
     random.count = 20000;
     random.radius = 0.008f;
+    random.seed = seed;
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(random);
     osgGlyphsTiles::TileOptions options;
     options.maxGlyphsPerTile = 1500;
@@ -68,7 +71,7 @@ std::string writeArchive()
     options.glyphBudget = GLYPH_BUDGET;
     osg::ref_ptr<osgGlyphsTiles::TileBuilder> builder = new osgGlyphsTiles::TileBuilder(*cloud, options);
     std::string error;
-    const std::string path = outputPath("tile_archive_two_views.osga");
+    const std::string path = outputPath(name + ".osga");
     EXPECT_TRUE(builder->addGlyphs(*cloud, error)) << error;
     EXPECT_TRUE(builder->write(path, error)) << error;
     return path;
@@ -127,6 +130,66 @@ bool pagerIsIdle(osgDB::DatabasePager& pager)
            pager.getDataToMergeListSize() == 0;
 }
 
+/** Shows scene in the two views of a CompositeViewer (a cull thread per camera, a draw thread per
+ * context), renders until ready() and neither view pages anything in, then checks that
+ * CHECKED_FRAMES more frames of each view equal its reference. */
+void expectEverySettledFrameIsTheReference(osg::Node* scene, const std::vector<Frame>& references,
+                                           const std::function<bool()>& ready)
+{
+    osg::ref_ptr<osgViewer::CompositeViewer> viewer = new osgViewer::CompositeViewer;
+    viewer->setThreadingModel(osgViewer::ViewerBase::CullThreadPerCameraDrawThreadPerContext);
+    std::vector<osg::ref_ptr<SettledCapture>> captures;
+    std::vector<osg::ref_ptr<osgViewer::View>> views;
+    for (std::size_t v = 0; v < references.size(); ++v)
+    {
+        osg::ref_ptr<osgGlyphsHeadless::HeadlessContext> context =
+            osgGlyphsHeadless::HeadlessContext::create(VIEWS[v].width, VIEWS[v].height);
+        ASSERT_TRUE(context.valid());
+        osg::ref_ptr<osgViewer::View> view = new osgViewer::View;
+        osg::Camera* camera = view->getCamera();
+        camera->setGraphicsContext(context.get());
+        setUpCamera(*camera, VIEWS[v]);
+        camera->setDrawBuffer(GL_FRONT);
+        camera->setReadBuffer(GL_FRONT);
+        captures.push_back(new SettledCapture(references[v]));
+        camera->setFinalDrawCallback(captures.back().get());
+        view->setSceneData(scene);
+        viewer->addView(view.get());
+        views.push_back(view);
+    }
+    // Page in until neither view asks for more, then check the frames after.
+    unsigned int frame = 0;
+    for (int idleFrames = 0; idleFrames < 3 && frame < 2000; ++frame)
+    {
+        viewer->frame();
+        bool idle = true;
+        for (const osg::ref_ptr<osgViewer::View>& view : views)
+            idle = idle && pagerIsIdle(*view->getDatabasePager());
+        idle = idle && ready();
+        idleFrames = idle ? idleFrames + 1 : 0;
+        if (!idle)
+            OpenThreads::Thread::microSleep(2000);
+    }
+    ASSERT_LT(frame, 2000u) << "the pager never settled";
+    for (const osg::ref_ptr<SettledCapture>& capture : captures)
+        capture->checkFrom(frame + 1);
+    for (unsigned int last = frame + 1 + CHECKED_FRAMES; frame < last; ++frame)
+        viewer->frame();
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    for (const osg::ref_ptr<SettledCapture>& capture : captures)
+        while (capture->getChecked() < CHECKED_FRAMES && std::chrono::steady_clock::now() < deadline)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    viewer->stopThreading();
+
+    for (std::size_t v = 0; v < captures.size(); ++v)
+    {
+        EXPECT_GE(captures[v]->getChecked(), CHECKED_FRAMES) << VIEWS[v].name << ": frames not drawn";
+        EXPECT_EQ(captures[v]->getDiffering(), 0u)
+            << VIEWS[v].name << ": frames that differ from the view rendered alone, of "
+            << captures[v]->getChecked();
+    }
+}
+
 }
 
 TEST(TileArchiveTwoViews, EveryPagedInFrameOfEachViewIsItsSingleThreadedRender)
@@ -157,57 +220,42 @@ TEST(TileArchiveTwoViews, EveryPagedInFrameOfEachViewIsItsSingleThreadedRender)
     // does. Below the root's PagedLOD the clouds compute their own as they are read.
     root->getBound();
 
-    osg::ref_ptr<osgViewer::CompositeViewer> viewer = new osgViewer::CompositeViewer;
-    viewer->setThreadingModel(osgViewer::ViewerBase::CullThreadPerCameraDrawThreadPerContext);
-    std::vector<osg::ref_ptr<SettledCapture>> captures;
-    std::vector<osg::ref_ptr<osgViewer::View>> views;
-    for (std::size_t v = 0; v < references.size(); ++v)
-    {
-        osg::ref_ptr<osgGlyphsHeadless::HeadlessContext> context =
-            osgGlyphsHeadless::HeadlessContext::create(VIEWS[v].width, VIEWS[v].height);
-        ASSERT_TRUE(context.valid());
-        osg::ref_ptr<osgViewer::View> view = new osgViewer::View;
-        osg::Camera* camera = view->getCamera();
-        camera->setGraphicsContext(context.get());
-        setUpCamera(*camera, VIEWS[v]);
-        camera->setDrawBuffer(GL_FRONT);
-        camera->setReadBuffer(GL_FRONT);
-        captures.push_back(new SettledCapture(references[v]));
-        camera->setFinalDrawCallback(captures.back().get());
-        view->setSceneData(root.get());
-        viewer->addView(view.get());
-        views.push_back(view);
-    }
-    // Page in until neither view asks for more, then check the frames after.
-    unsigned int frame = 0;
-    for (int idleFrames = 0; idleFrames < 3 && frame < 2000; ++frame)
-    {
-        viewer->frame();
-        bool idle = true;
-        for (const osg::ref_ptr<osgViewer::View>& view : views)
-            idle = idle && pagerIsIdle(*view->getDatabasePager());
-        idleFrames = idle ? idleFrames + 1 : 0;
-        if (!idle)
-            OpenThreads::Thread::microSleep(2000);
-    }
-    ASSERT_LT(frame, 2000u) << "the pager never settled";
-    for (const osg::ref_ptr<SettledCapture>& capture : captures)
-        capture->checkFrom(frame + 1);
-    for (unsigned int last = frame + 1 + CHECKED_FRAMES; frame < last; ++frame)
-        viewer->frame();
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    for (const osg::ref_ptr<SettledCapture>& capture : captures)
-        while (capture->getChecked() < CHECKED_FRAMES && std::chrono::steady_clock::now() < deadline)
-            std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    viewer->stopThreading();
-
-    for (std::size_t v = 0; v < captures.size(); ++v)
-    {
-        EXPECT_GE(captures[v]->getChecked(), CHECKED_FRAMES) << VIEWS[v].name << ": frames not drawn";
-        EXPECT_EQ(captures[v]->getDiffering(), 0u)
-            << VIEWS[v].name << ": frames that differ from the view rendered alone, of "
-            << captures[v]->getChecked();
-    }
+    expectEverySettledFrameIsTheReference(root.get(), references, [] { return true; });
     EXPECT_TRUE(root->getTileChecking()->getRefusedTiles().empty());
     EXPECT_LE(root->getBudget()->getLastGlyphs(), GLYPH_BUDGET);
+}
+
+// A series of tile archives playing in the same two views: the player goes to frame 2 in the update
+// traversal while both cull threads page frame 2's tiles in and prefetch frame 0's (the next of
+// playback, looping). Once settled, every frame of each view is frame 2 rendered alone.
+TEST(TileSeriesTwoViews, EverySettledFrameOfEachViewIsItsSingleThreadedRender)
+{
+    osg::ref_ptr<osgGlyphsTiles::TileSeries> series = new osgGlyphsTiles::TileSeries;
+    for (unsigned int frame = 0; frame < 3; ++frame)
+        series->addFrame(writeArchive("tile_series_two_views_" + std::to_string(frame), 11 + frame),
+                         10.0 * frame);
+    std::vector<Frame> references;
+    for (const TileView& view : VIEWS)
+    {
+        osg::ref_ptr<osgGlyphsTiles::TileSeries> alone = new osgGlyphsTiles::TileSeries(*series);
+        std::string error;
+        ASSERT_EQ(alone->showFrameNow(2, error), osgGlyphsTiles::TileSeries::FRAME_SHOWN) << error;
+        Renderer renderer(view.width, view.height);
+        setUpCamera(*renderer.getViewer()->getCamera(), view);
+        int frames = 0;
+        references.push_back(renderPaged(renderer, alone.get(), frames));
+        saveFrame(references.back(), std::string("tile_series_two_views_") + view.name);
+    }
+    osg::ref_ptr<osgGlyphsTiles::TileSeriesPlayer> player =
+        new osgGlyphsTiles::TileSeriesPlayer(series.get());
+    series->setUpdateCallback(player.get());
+    std::string error;
+    ASSERT_TRUE(player->showNow(0.0, error)) << error;
+    series->getBound();
+    player->seek(2.0);
+    expectEverySettledFrameIsTheReference(series.get(), references,
+                                          [&series] { return series->getShownFrame() == 2; });
+    EXPECT_EQ(series->getShownFrame(), 2u);
+    EXPECT_EQ(series->getPrefetchFrame(), 0u);
+    EXPECT_TRUE(series->getShownRoot()->getTileChecking()->getRefusedTiles().empty());
 }

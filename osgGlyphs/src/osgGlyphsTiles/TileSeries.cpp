@@ -250,6 +250,10 @@ void TileSeries::traverse(osg::NodeVisitor& nv)
     else if (osgUtil::CullVisitor* cv = nv.asCullVisitor())
         prefetchTiles(*cv);
     osg::Group::traverse(nv);
+    // A frame shown in place of another dirties the bound: computed here, before cull threads
+    // would compute it together.
+    if (nv.getVisitorType() == osg::NodeVisitor::UPDATE_VISITOR)
+        getBound();
 }
 
 void TileSeries::prefetchTiles(osgUtil::CullVisitor& cv)
@@ -258,10 +262,11 @@ void TileSeries::prefetchTiles(osgUtil::CullVisitor& cv)
     if (prefetched == _loaded.end() || _prefetch == _shown)
         return;
     TileRoot& root = *prefetched->second;
+    // The cull threads of several views take turns: the budget and the PagedLODs' stamps are shared.
+    std::lock_guard<std::mutex> lock(_prefetchMutex);
     float lodScale = cv.getLODScale();
     if (root.getGlyphBudget())
     {
-        std::lock_guard<std::mutex> lock(_prefetchMutex);
         _prefetchBudget->setMaxGlyphs(root.getGlyphBudget());
         lodScale = static_cast<float>(lodScale * _prefetchBudget->computeLODScale(root, cv));
     }
