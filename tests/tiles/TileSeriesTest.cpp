@@ -12,6 +12,7 @@
 
 #include <osgDB/Archive>
 #include <osgDB/DatabasePager>
+#include <osgDB/FileNameUtils>
 #include <osgDB/ReadFile>
 #include <osgDB/Registry>
 #include <osgDB/WriteFile>
@@ -64,7 +65,8 @@ osg::ref_ptr<osgGlyphsTiles::TileSeries> writeSeries(const std::string& name,
         EXPECT_TRUE(builder->addGlyphs(*clouds[frame], error)) << error;
         EXPECT_TRUE(builder->write(framePath(name, frame), error)) << error;
         // Relative to the index's folder.
-        series->addFrame(std::filesystem::path(framePath(name, frame)).filename().string(), 100.0 * frame);
+        series->addFrame(std::filesystem::path(framePath(name, frame)).filename().string(),
+                         1234567.0 + 100.0 * frame);
     }
     const std::string index = outputPath(name + ".osgt");
     EXPECT_TRUE(osgDB::writeNodeFile(*series, index));
@@ -121,7 +123,7 @@ TEST(TileSeries, EveryFrameAtFullDetailIsItsFlatCloud)
     osg::ref_ptr<osgGlyphsTiles::TileSeries> series = writeSeries("series_full", clouds, false);
     ASSERT_TRUE(series.valid()) << "the index read back";
     ASSERT_EQ(series->getNumFrames(), 3u);
-    EXPECT_EQ(series->getFrames()[2].timestep, 200.0);
+    EXPECT_EQ(series->getFrames()[2].timestep, 1234767.0) << "every digit through the text index";
     osg::ref_ptr<osgGlyphsTiles::TileSeriesPlayer> player =
         new osgGlyphsTiles::TileSeriesPlayer(series.get());
     series->setUpdateCallback(player.get());
@@ -131,7 +133,7 @@ TEST(TileSeries, EveryFrameAtFullDetailIsItsFlatCloud)
         std::string error;
         ASSERT_TRUE(player->showNow(frame, error)) << error;
         EXPECT_EQ(series->getShownFrame(), frame);
-        EXPECT_EQ(player->getTimestep(), 100.0 * frame);
+        EXPECT_EQ(player->getTimestep(), 1234567.0 + 100.0 * frame);
         Renderer flatRenderer(SIZE, SIZE), pagedRenderer(SIZE, SIZE);
         lookAtTheUnitCube(flatRenderer);
         lookAtTheUnitCube(pagedRenderer);
@@ -277,4 +279,38 @@ TEST(TileSeries, ACorruptOrMissingFrameIsReportedOnceAndTheOthersPlay)
     EXPECT_FALSE(osgDB::Registry::instance()->getRefFromArchiveCache(series->getFramePath(other)).valid() &&
                  series->getPrefetchFrame() != other)
         << "frame " << other << "'s archive is still open";
+}
+
+// An index that lies (an absurd frame count, a count larger than the frames listed, a timestep that
+// is not a number, a frame without a file) reads as no series: nothing allocated for the count,
+// nothing crashes, and the viewer says the file is not a series.
+TEST(TileSeries, AnIndexThatLiesIsNoSeries)
+{
+    const std::string header = "#Ascii Scene\n#Version 161\n#Generator OpenSceneGraph 3.6.5\n\n"
+                               "osgGlyphsTiles::TileSeries {\n  UniqueID 1\n";
+    const std::vector<std::pair<std::string, std::string>> lies = {
+        {"absurd_count", "  Frames 4000000000 {\n    \"a.osga\" 0\n  }\n"},
+        {"short_list", "  Frames 3 {\n    \"a.osga\" 0\n  }\n"},
+        {"nan_timestep", "  Frames 1 {\n    \"a.osga\" nan\n  }\n"},
+        {"no_file", "  Frames 1 {\n    \"\" 0\n  }\n"},
+    };
+    std::string error;
+    ASSERT_TRUE(osgGlyphsTiles::findTileSerializers(error)) << error;
+    const std::string truthPath = outputPath("series_truth.osgt");
+    std::ofstream(truthPath) << header << "  Frames 1 {\n    \"a.osga\" 20\n  }\n  GlyphBudget 0\n}\n";
+    osg::ref_ptr<osgGlyphsTiles::TileSeries> truth =
+        dynamic_cast<osgGlyphsTiles::TileSeries*>(osgDB::readNodeFile(truthPath));
+    ASSERT_TRUE(truth.valid()) << "the same index, truthful";
+    EXPECT_EQ(truth->getNumFrames(), 1u);
+    EXPECT_EQ(truth->getFramePath(0), osgDB::getFilePath(truthPath) + "/a.osga");
+    for (const auto& lie : lies)
+    {
+        const std::string path = outputPath("series_lie_" + lie.first + ".osgt");
+        std::ofstream(path) << header << lie.second << "  GlyphBudget 0\n}\n";
+        osg::ref_ptr<osg::Node> node = osgDB::readNodeFile(path);
+        const osgGlyphsTiles::TileSeries* series =
+            dynamic_cast<const osgGlyphsTiles::TileSeries*>(node.get());
+        EXPECT_TRUE(!series || series->getNumFrames() == 0)
+            << lie.first << ": read as a series of " << series->getNumFrames() << " frames";
+    }
 }

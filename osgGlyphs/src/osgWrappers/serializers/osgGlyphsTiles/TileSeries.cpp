@@ -5,6 +5,9 @@
 #include <osgDB/OutputStream>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -16,6 +19,24 @@ namespace
 /** More frames than this in an index is a corrupt file, not a series. */
 const unsigned int MAX_FRAMES = 100000000u;
 
+}
+
+/** A frame's timestep: in text files a word read whole (osgDB's text reader takes a word that is
+ * not a number, "nan" among them, for 0). */
+static bool readTimestep(osgDB::InputStream& is, double& timestep)
+{
+    if (is.isBinary())
+        is >> timestep;
+    else
+    {
+        std::string word;
+        is >> word;
+        char* end = nullptr;
+        timestep = std::strtod(word.c_str(), &end);
+        if (word.empty() || *end != '\0')
+            timestep = std::numeric_limits<double>::quiet_NaN();
+    }
+    return !is.getException();
 }
 
 static bool checkFrames(const TileSeries&)
@@ -41,7 +62,8 @@ static bool readFrames(osgDB::InputStream& is, TileSeries& series)
     {
         TileSeries::Frame frame;
         is.readWrappedString(frame.file);
-        is >> frame.timestep;
+        if (!readTimestep(is, frame.timestep))
+            return false;
         if (frame.file.empty() || !std::isfinite(frame.timestep))
         {
             is.throwException("osgGlyphs: TileSeries: frame " + std::to_string(i) +
@@ -51,6 +73,8 @@ static bool readFrames(osgDB::InputStream& is, TileSeries& series)
         frames.push_back(frame);
     }
     is >> is.END_BRACKET;
+    if (is.getException())
+        return false;
     series.setFrames(frames);
     const osgDB::Options* options = is.getOptions();
     if (series.getDatabasePath().empty() && options && !options->getDatabasePathList().empty())
@@ -65,7 +89,16 @@ static bool writeFrames(osgDB::OutputStream& os, const TileSeries& series)
     for (const TileSeries::Frame& frame : frames)
     {
         os.writeWrappedString(frame.file);
-        os << frame.timestep << std::endl;
+        // Text streams write doubles with 6 significant digits: timesteps go as all of theirs.
+        if (os.isBinary())
+            os << frame.timestep;
+        else
+        {
+            char digits[32];
+            std::snprintf(digits, sizeof(digits), "%.17g", frame.timestep);
+            os << std::string(digits);
+        }
+        os << std::endl;
     }
     os << os.END_BRACKET << std::endl;
     return true;
