@@ -4,41 +4,18 @@ polymer.lammpstrj (LAMMPS, sorted by id, so particle i is atom id i + 1) in HOOM
 the origin, and the bonds of polymer.data in frame 0. gsd.hoomd writes a later frame's chunk only
 where it differs from frame 0's: frames 1 to 4 hold no bonds chunks and take frame 0's.
 Run from this folder: /usr/bin/python3 make_gsd.py"""
+import os
+import sys
+
 import gsd.hoomd
 
-
-def dump_frames(path):
-    with open(path) as lines:
-        lines = iter(lines.read().splitlines())
-        for line in lines:
-            if line != "ITEM: TIMESTEP":
-                continue
-            step = int(next(lines))
-            next(lines)
-            count = int(next(lines))
-            next(lines)
-            bounds = [tuple(map(float, next(lines).split())) for _ in range(3)]
-            next(lines)
-            rows = [next(lines).split() for _ in range(count)]
-            yield step, bounds, rows
-
-
-def data_bonds(path):
-    with open(path) as lines:
-        text = lines.read().splitlines()
-    start = text.index("Bonds") + 2
-    bonds = []
-    for line in text[start:]:
-        fields = line.split()
-        if len(fields) != 4:
-            break
-        bonds.append((int(fields[2]) - 1, int(fields[3]) - 1))
-    return bonds
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from lammps_text import data_bonds, dump_frames  # noqa: E402
 
 
 bonds = data_bonds("polymer.data")
 with gsd.hoomd.open("polymer.gsd", "wb") as trajectory:
-    for step, bounds, rows in dump_frames("polymer.lammpstrj"):
+    for step, bounds, _, rows in dump_frames("polymer.lammpstrj"):
         frame = gsd.hoomd.Snapshot()
         frame.configuration.step = step
         lengths = [hi - lo for lo, hi in bounds]

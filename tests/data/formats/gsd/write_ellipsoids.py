@@ -4,25 +4,21 @@ shapex shapey shapez = 3 1 1, turned by quatw quati quatj quatk), in HOOMD's box
 origin, with the type's shape as HOOMD's schema gives it in particles/type_shapes:
 {"type": "Ellipsoid", "a": 1.5, "b": 0.5, "c": 0.5} (semi-axes), and the turns as
 particles/orientation. Run from this folder: /usr/bin/python3 write_ellipsoids.py"""
+import os
+import sys
+
 import gsd.hoomd
 import numpy
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
+from lammps_text import dump_frames  # noqa: E402
 
 DUMP = "../../lammps/ellipsoids/dump.ellipsoids"
 
 
 def frames(path):
-    lines = iter(open(path).read().splitlines())
-    for line in lines:
-        if line != "ITEM: TIMESTEP":
-            continue
-        step = int(next(lines))
-        next(lines)
-        count = int(next(lines))
-        next(lines)
-        bounds = [tuple(map(float, next(lines).split())) for _ in range(3)]
-        columns = next(lines).split()[2:]
-        rows = [dict(zip(columns, next(lines).split())) for _ in range(count)]
-        yield step, bounds, rows
+    for step, bounds, columns, rows in dump_frames(path):
+        yield step, bounds, [dict(zip(columns, row)) for row in rows]
 
 
 with gsd.hoomd.open("ellipsoids.gsd", "wb") as trajectory:
