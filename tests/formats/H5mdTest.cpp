@@ -3,6 +3,7 @@
  * formulas it was written from; datasets named by the user; shares; and malformed files written
  * here through HDF5's C library. */
 
+#include "BondTruth.h"
 #include "FormatTestData.h"
 #include "Hdf5Layout.h"
 
@@ -419,4 +420,105 @@ TEST(Hdf5, NotHdf5)
     EXPECT_TRUE(isFrameFileFormat("hdf5"));
     EXPECT_EQ(formatFromExtension("run.h5md"), "h5md");
     EXPECT_EQ(formatFromExtension("snap_012.hdf5"), "hdf5");
+}
+
+// H5MD connectivity written by h5py (tests/data/bonds/make_h5md.py) from the polymer's data file:
+// bonds by the particles' ids in a shuffled file, and by their indices, time-dependent with pairs
+// holding the fill value; both are the data file's Bonds in every frame, each to its nearest image
+// a harmonic bond's length. Triples (angles) are not bonds: left out with a warning.
+TEST(H5md, ConnectivityIsTheFramesBonds)
+{
+    const IdPairs truth = bondsOfDataFile(bondData("polymer.data"));
+    ASSERT_EQ(truth.size(), 180u);
+    std::vector<std::string> warnings;
+    FrameSourceOptions options;
+    options.warning = [&warnings](const std::string& warning) { warnings.push_back(warning); };
+    osg::ref_ptr<FrameSource> byId = openFrames(bondData("polymer.h5md"), options);
+    osg::ref_ptr<FrameSource> byIndex = openFrames(bondData("polymer_indices.h5md"));
+    ASSERT_TRUE(byId && byIndex);
+    for (std::size_t index : {0u, 4u})
+    {
+        SCOPED_TRACE("frame " + std::to_string(index));
+        osg::ref_ptr<PointData> shuffled = frameOf(*byId, index);
+        ASSERT_TRUE(shuffled && shuffled->getBonds());
+        expectWellFormed(*shuffled);
+        EXPECT_EQ(bondsById(*shuffled), truth);
+        expectBondedLengths(*shuffled);
+        osg::ref_ptr<PointData> ordered = frameOf(*byIndex, index);
+        ASSERT_TRUE(ordered && ordered->getBonds());
+        expectWellFormed(*ordered);
+        EXPECT_EQ(bondsByIndex(*ordered), truth);
+    }
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("/connectivity/angles: tuples of 3 particles, not bonds: left out"),
+              std::string::npos)
+        << warnings[0];
+    // A share holds the bonds between its own particles.
+    options.share = {1, 3};
+    osg::ref_ptr<PointData> part = frameOf(*openFrames(bondData("polymer_indices.h5md"), options), 2);
+    ASSERT_TRUE(part && part->getBonds());
+    const osgGlyphsData::PointRange range = osgGlyphsData::getShareRange(options.share, 192);
+    IdPairs own, inShare;
+    for (const auto& [a, b] : truth)
+        if (uint64_t(a - 1) >= range.begin && uint64_t(b - 1) < range.end)
+            own.emplace(a, b);
+    for (const Bond& bond : *part->getBonds())
+        inShare.emplace(int64_t(range.begin + bond.first) + 1, int64_t(range.begin + bond.second) + 1);
+    EXPECT_GT(own.size(), 0u);
+    EXPECT_EQ(inShare, own);
+    // A file without connectivity lists no bonds.
+    EXPECT_FALSE(frameOf(*openFrames(h5md("melt.h5md")), 0)->getBonds());
+}
+
+// Pairs that lie fail the frame with one line naming the file, the frame, the dataset and the pair.
+TEST(H5md, ConnectivityThatLiesFailsNamingThePair)
+{
+    using namespace hdf5layout;
+    const std::string bonds = "/connectivity/bonds";
+    {
+        // Ids 1 and 2, 3 and 4: the ids of frame 0; frame 1's particles have ids 5 to 8.
+        Layout layout = smallH5md();
+        layout[bonds] = {{2, 2}, Kind::Int, 1.0, 1.0};
+        const std::string path = scratch("bonds_ids.h5md", layout);
+        osg::ref_ptr<FrameSource> file = openFrames(path);
+        ASSERT_TRUE(file);
+        osg::ref_ptr<PointData> first = frameOf(*file, 0);
+        ASSERT_TRUE(first && first->getBonds());
+        EXPECT_EQ(first->getBonds()->size(), 2u);
+        std::string error;
+        EXPECT_FALSE(file->readFrame(1, error));
+        EXPECT_EQ(error.rfind(path + ": ", 0), 0u) << error;
+        EXPECT_NE(error.find("frame 1: dataset " + bonds +
+                             ": pair 0 names id 1, which no particle of "
+                             "/particles/all has"),
+                  std::string::npos)
+            << error;
+        EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+    }
+    Layout indices = smallH5md();
+    for (const char* element : {"value", "step", "time"})
+        indices.erase(std::string("/particles/all/id/") + element);
+    {
+        Layout layout = indices;
+        layout[bonds] = {{2, 2}, Kind::Int, 1.0, 1.0}; // particles 1-2 and 3-4 of 0 to 3
+        expectError(scratch("bonds_past.h5md", layout), bonds,
+                    "pair 1 names particle 4, past the 4 particles", "0");
+    }
+    {
+        Layout layout = indices;
+        layout[bonds] = {{1, 2}, Kind::Int, 2.0, 0.0};
+        expectError(scratch("bonds_self.h5md", layout), bonds, "pair 0 bonds particle 2 to itself", "0");
+    }
+    {
+        Layout layout = indices;
+        layout[bonds] = {{2, 2}, Kind::Int, -1.0, 1.0};
+        expectError(scratch("bonds_negative.h5md", layout), bonds, "pair 0 names particle -1", "0");
+    }
+    {
+        Layout layout = smallH5md();
+        layout["/particles/all/id/value"] = {{3, 4}, Kind::Int, 1.0, 0.0}; // every particle id 1
+        layout[bonds] = {{1, 2}, Kind::Int, 1.0, 0.0};
+        expectError(scratch("bonds_twins.h5md", layout), "/particles/all/id/value",
+                    "id 1 is held by rows 0 and 1", "0");
+    }
 }

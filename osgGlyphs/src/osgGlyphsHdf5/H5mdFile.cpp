@@ -12,7 +12,11 @@
 // gives its value at that step or the last before it. Several groups are concatenated in name
 // order with a categorical column "group". The boundary attribute is not read: PointData's box
 // has no periodicity.
+//   /connectivity/<name>          pairs of particles (ids where the group has an id element, else
+//                                  its rows; a fill value marks unused pairs), fixed or
+//                                  time-dependent: the frame's bonds (H5mdConnectivity).
 
+#include "H5mdConnectivity.h"
 #include "Hdf5Readers.h"
 
 #include "formats/CellBox.h"
@@ -57,6 +61,7 @@ public:
             namedGroup(datasets, place);
         _columns = planColumns(_groups, "group", _path, _warnings);
         describeBox(place);
+        _connectivity = describeConnectivity(_file.get(), _groups, _warnings, place);
         if (_groups.size() > 1)
             _warnings.push_back(_path + ": " + std::to_string(_groups.size()) +
                                 " particle groups, read together with the column \"group\"");
@@ -95,6 +100,9 @@ public:
             const int64_t step = getFrameInfo(frame).timestep;
             osg::ref_ptr<PointData> data = readParticles(_groups, _columns, "group", step, share, place);
             setBox(*data, step, place);
+            if (!_connectivity.empty())
+                data->setBonds(readConnectivity(_connectivity, _groups, step,
+                                                getShareRange(share, getFrameInfo(frame).points), place));
             return data;
         }
         catch (const Hdf5Error& failure)
@@ -109,6 +117,7 @@ protected:
     {
         Hdf5Lock lock;
         _groups.clear();
+        _connectivity.clear();
         _edges = Element();
         _offset = Element();
         _file.reset();
@@ -264,6 +273,7 @@ private:
 
     Handle _file;
     std::vector<ParticleGroup> _groups;
+    std::vector<PairList> _connectivity; // /connectivity's bonds
     std::vector<std::string> _columns;
     double _dimension = 3.0;
     Element _edges;

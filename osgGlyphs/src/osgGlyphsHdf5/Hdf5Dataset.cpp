@@ -243,6 +243,39 @@ std::vector<double> osgGlyphsHdf5::detail::readAttributeNumbers(hid_t file, cons
     return values;
 }
 
+std::string osgGlyphsHdf5::detail::readObjectReference(hid_t file, const std::string& object,
+                                                       const std::string& name, const Place& place)
+{
+    const std::string where = object + "@" + name;
+    Handle attribute = openAttribute(file, object, name, place);
+    Handle type(H5Aget_type(attribute.get()), H5Tclose);
+    if (!type.valid() || H5Tget_class(type.get()) != H5T_REFERENCE)
+        place.fail(where, "is not an object reference");
+    if (attributeCount(attribute, where, 1, place) != 1)
+        place.fail(where, "holds more than one reference");
+    hobj_ref_t reference{};
+    if (H5Aread(attribute.get(), H5T_STD_REF_OBJ, &reference) < 0)
+        place.fail(where, "cannot be read: " + lastHdf5Error());
+    char path[1024] = {};
+    const ssize_t length = H5Rget_name(file, H5R_OBJECT, &reference, path, sizeof(path));
+    if (length <= 0 || length >= static_cast<ssize_t>(sizeof(path)))
+        place.fail(where, "refers to no object of the file");
+    return std::string(path, static_cast<std::size_t>(length));
+}
+
+bool osgGlyphsHdf5::detail::readIntegerFillValue(const DatasetInfo& info, int64_t& fill)
+{
+    Handle properties(H5Dget_create_plist(info.dataset.get()), H5Pclose);
+    H5D_fill_value_t defined = H5D_FILL_VALUE_UNDEFINED;
+    if (!properties.valid() || H5Pfill_value_defined(properties.get(), &defined) < 0 ||
+        defined != H5D_FILL_VALUE_USER_DEFINED)
+    {
+        H5Eclear2(H5E_DEFAULT);
+        return false;
+    }
+    return H5Pget_fill_value(properties.get(), H5T_NATIVE_INT64, &fill) >= 0;
+}
+
 std::vector<std::string> osgGlyphsHdf5::detail::readAttributeStrings(hid_t file, const std::string& object,
                                                                      const std::string& name,
                                                                      std::size_t limit, const Place& place)

@@ -66,6 +66,14 @@ std::vector<double> readAttributeNumbers(hid_t file, const std::string& object, 
 std::vector<std::string> readAttributeStrings(hid_t file, const std::string& object, const std::string& name,
                                               std::size_t limit, const Place& place);
 
+/** The path of the object an object reference attribute refers to (H5MD's particles_group);
+ * throws at place naming object/@name when it is not one. */
+std::string readObjectReference(hid_t file, const std::string& object, const std::string& name,
+                                const Place& place);
+
+/** The dataset's fill value as an integer, where its creator defined one; false where not. */
+bool readIntegerFillValue(const DatasetInfo& info, int64_t& fill);
+
 /** The names of a group's members, in HDF5's name order. */
 std::vector<std::string> listMembers(hid_t file, const std::string& group, const Place& place);
 
