@@ -29,7 +29,8 @@ for _ in $(seq 100); do
 done
 [[ -n $shot ]] || fail "no screenshot after key c"
 sleep 0.5
-"$check" coverage "$shot" 0.05 || fail "$shot shows no glyphs"
+# Glyphs, and background around them: the dataset framed, not one glyph filling the window.
+"$check" coverage "$shot" 0.05 0.9 || fail "$shot shows no glyphs, or no background around them"
 
 close_with_escape
 grep -qi "error\|could not find plugin" viewer.log && fail "osgviewer reported an error"

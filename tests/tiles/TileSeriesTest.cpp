@@ -100,10 +100,14 @@ Frame playUntilShown(Renderer& renderer, osgGlyphsTiles::TileSeries& series, std
 {
     osgViewer::Viewer* viewer = renderer.getViewer();
     osgDB::DatabasePager* pager = viewer->getDatabasePager();
-    for (int frames = 0; frames < 4000 && (series.getShownFrame() != frame || pagerIsBusy(*pager)); ++frames)
+    // Until the frame is shown and the pager has stayed idle for three renders (it is idle before
+    // the first cull asks for anything).
+    for (int frames = 0, idle = 0; frames < 4000 && idle < 3; ++frames)
     {
         viewer->frame();
         during.push_back(renderer.capture());
+        const bool settled = series.getShownFrame() == frame && !pagerIsBusy(*pager);
+        idle = settled ? idle + 1 : 0;
         if (pager->getDataToMergeListSize() == 0)
             OpenThreads::Thread::microSleep(2000);
     }

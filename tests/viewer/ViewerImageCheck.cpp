@@ -8,8 +8,9 @@
 //       origin with y up and a vertical field of view of FOV degrees; the spheres have RADIUS.
 //   osgglyphviewer_image_check differ A.png B.png MIN_FRACTION
 //       A and B have the same size and at least MIN_FRACTION of their pixels differ.
-//   osgglyphviewer_image_check coverage A.png MIN_FRACTION
-//       at least MIN_FRACTION of the pixels differ from the colour of the bottom-left corner.
+//   osgglyphviewer_image_check coverage A.png MIN_FRACTION [MAX_FRACTION]
+//       at least MIN_FRACTION (and at most MAX_FRACTION) of the pixels differ from the colour of the
+//       bottom-left corner.
 //   osgglyphviewer_image_check match A.png BASELINE.png CHANNEL MAX_FRACTION
 //       A and BASELINE have the same size and at most MAX_FRACTION of the pixels differ by more
 //       than CHANNEL levels (0..255) in a colour channel.
@@ -148,7 +149,7 @@ int checkDiffer(int argc, char** argv)
 
 int checkCoverage(int argc, char** argv)
 {
-    if (argc != 4)
+    if (argc != 4 && argc != 5)
         return 2;
     osg::ref_ptr<osg::Image> image = readImage(argv[2]);
     if (!image)
@@ -158,8 +159,10 @@ int checkCoverage(int argc, char** argv)
         for (int x = 0; x < image->s(); ++x)
             count += differs(*image, x, y, *image, 0, 0);
     const double fraction = static_cast<double>(count) / (image->s() * image->t());
-    std::cout << "pixels unlike the background: " << fraction << " (at least " << argv[3] << ")" << std::endl;
-    return fraction >= std::atof(argv[3]) ? 0 : 1;
+    const double most = argc == 5 ? std::atof(argv[4]) : 1.0;
+    std::cout << "pixels unlike the background: " << fraction << " (at least " << argv[3] << ", at most " << most
+              << ")" << std::endl;
+    return fraction >= std::atof(argv[3]) && fraction <= most ? 0 : 1;
 }
 
 int checkMatch(int argc, char** argv)

@@ -79,6 +79,11 @@ static bool readFrames(osgDB::InputStream& is, TileSeries& series)
     const osgDB::Options* options = is.getOptions();
     if (series.getDatabasePath().empty() && options && !options->getDatabasePathList().empty())
         series.setDatabasePath(options->getDatabasePathList().front());
+    // Read with its first frame shown, as an archive is read with its root tile: a viewer frames
+    // the series by its bound before the first update traversal.
+    std::string error;
+    if (!frames.empty() && series.showFrameNow(0, error) == TileSeries::FRAME_FAILED)
+        OSG_WARN << "osgGlyphs: " << error << std::endl;
     return true;
 }
 
