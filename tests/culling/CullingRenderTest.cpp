@@ -76,19 +76,6 @@ void orbit(Renderer& renderer, double azimuth)
     renderer.setLookAt(centre - direction * 2.2, centre, osg::Vec3d(0.0, 0.0, 1.0));
 }
 
-/** How many pixels differ at all in colour or depth. */
-int countDifferences(const Frame& a, const Frame& b)
-{
-    int different = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x)
-        {
-            const bool differs = a.colorAt(x, y) != b.colorAt(x, y) || a.depthAt(x, y) != b.depthAt(x, y);
-            different += differs;
-        }
-    return different;
-}
-
 /** At how many pixel centres of its silhouette (exact ray-sphere intersections) a sphere lies
  * behind the frame's depth, as a hidden glyph must, and at how many it does not (it shows). */
 struct HiddenCheck
@@ -159,9 +146,9 @@ TEST_P(CullingRender, OrbitWithAJumpMatchesTheUnculledCloud)
         EXPECT_GT(statistics.rounds, 1u) << "occlusion culling was not tried";
         const Frame frustum = renderWith(renderer, scene.get(), *cloud, GlyphCulling::Frustum);
         const Frame off = renderWith(renderer, scene.get(), *cloud, GlyphCulling::Off);
-        EXPECT_EQ(countDifferences(culled, frustum), 0) << "azimuth " << azimuth;
+        EXPECT_EQ(countDifferingPixels(culled, frustum), 0) << "azimuth " << azimuth;
         // Off draws in the caller's order: only exact depth ties between two glyphs may differ.
-        EXPECT_LE(countDifferences(culled, off), WIDTH * HEIGHT / 2000) << "azimuth " << azimuth;
+        EXPECT_LE(countDifferingPixels(culled, off), WIDTH * HEIGHT / 2000) << "azimuth " << azimuth;
         if (azimuth == 225.0)
             saveFrame(culled, std::string("culling_") + osgGlyphs::getShapeName(GetParam()));
     }
@@ -191,14 +178,16 @@ TEST(CullingRenderEdits, MovedGlyphsAndAClipPlaneMatchTheUnculledCloud)
     cloud->dirtyGlyphs();
     Frame culled = renderWith(renderer, scene.get(), *cloud, GlyphCulling::Occlusion);
     EXPECT_GT(statisticsOf(*cloud, renderer).chunksOccluded, 0u);
-    EXPECT_EQ(countDifferences(culled, renderWith(renderer, scene.get(), *cloud, GlyphCulling::Frustum)), 0);
+    EXPECT_EQ(countDifferingPixels(culled, renderWith(renderer, scene.get(), *cloud, GlyphCulling::Frustum)),
+              0);
 
     // A clip plane cuts the front away: what was hidden behind it shows.
     scene->getOrCreateStateSet()->setAttributeAndModes(
         new osg::ClipPlane(0, osg::Plane(1.0, 1.0, 0.0, -0.9)));
     culled = renderWith(renderer, scene.get(), *cloud, GlyphCulling::Occlusion);
-    EXPECT_EQ(countDifferences(culled, renderWith(renderer, scene.get(), *cloud, GlyphCulling::Frustum)), 0);
-    EXPECT_LE(countDifferences(culled, renderWith(renderer, scene.get(), *cloud, GlyphCulling::Off)),
+    EXPECT_EQ(countDifferingPixels(culled, renderWith(renderer, scene.get(), *cloud, GlyphCulling::Frustum)),
+              0);
+    EXPECT_LE(countDifferingPixels(culled, renderWith(renderer, scene.get(), *cloud, GlyphCulling::Off)),
               WIDTH * HEIGHT / 2000);
 }
 
@@ -213,7 +202,7 @@ TEST(CullingRenderEdits, ChunksOutsideTheViewAreSkipped)
     const osgGlyphs::GlyphCullingStatistics statistics = statisticsOf(*cloud, renderer);
     EXPECT_GT(statistics.chunksOutsideView, statistics.chunks / 2);
     EXPECT_LT(statistics.glyphsSubmitted, COUNT / 2);
-    EXPECT_EQ(countDifferences(culled, renderWith(renderer, scene.get(), *cloud, GlyphCulling::Off)), 0);
+    EXPECT_EQ(countDifferingPixels(culled, renderWith(renderer, scene.get(), *cloud, GlyphCulling::Off)), 0);
 }
 
 TEST(CullingRenderEdits, ACloudBehindANearerOneInTheFrontToBackBinIsSkipped)
@@ -245,7 +234,8 @@ TEST(CullingRenderEdits, ACloudBehindANearerOneInTheFrontToBackBinIsSkipped)
         << "of " << statistics.chunks << " chunks, " << statistics.chunksOccluded << " found hidden";
     EXPECT_GT(statistics.chunksOccluded, statistics.chunks * 9 / 10);
     front->setCulling(GlyphCulling::Frustum);
-    EXPECT_EQ(countDifferences(culled, renderWith(renderer, scene.get(), *back, GlyphCulling::Frustum)), 0);
+    EXPECT_EQ(countDifferingPixels(culled, renderWith(renderer, scene.get(), *back, GlyphCulling::Frustum)),
+              0);
 
     // Alone, the back cloud shows: the test above is no accident of the view.
     scene->removeChild(frontGeode.get());
@@ -305,7 +295,7 @@ TEST(CullingRenderEdits, TheFrontToBackBinCullsItsCloudsTogether)
         EXPECT_GT(total.chunksOccluded, 0u);
         for (const auto& cloud : clouds)
             cloud->setCulling(GlyphCulling::Off);
-        EXPECT_EQ(countDifferences(culled, renderer.render(scene.get())), 0) << "azimuth " << azimuth;
+        EXPECT_EQ(countDifferingPixels(culled, renderer.render(scene.get())), 0) << "azimuth " << azimuth;
     }
 }
 

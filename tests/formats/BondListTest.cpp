@@ -100,16 +100,8 @@ TEST(BondList, AGsdFileListsItsBondsInEveryFrame)
     FrameSourceOptions options;
     options.share = {2, 5};
     osg::ref_ptr<PointData> part = frameOf(*openFrames(bondData("polymer.gsd"), options), 3);
-    ASSERT_TRUE(part && part->getBonds());
-    const PointRange range = getShareRange(options.share, 192);
-    IdPairs own, inShare;
-    for (const auto& [a, b] : truth)
-        if (uint64_t(a - 1) >= range.begin && uint64_t(b - 1) < range.end)
-            own.emplace(a, b);
-    for (const Bond& bond : *part->getBonds())
-        inShare.emplace(int64_t(range.begin + bond.first) + 1, int64_t(range.begin + bond.second) + 1);
-    EXPECT_GT(own.size(), 0u);
-    EXPECT_EQ(inShare, own);
+    ASSERT_TRUE(part);
+    expectShareHoldsItsOwnBonds(*part, options.share, 192, truth);
     // A GSD without bonds lists none.
     EXPECT_FALSE(frameOf(*openFrames(dataPath("gsd/melt.gsd")), 0)->getBonds());
 }

@@ -7,6 +7,7 @@
 #include "FormatTestData.h"
 
 #include <osgGlyphsData/BondGlyphs>
+#include <osgGlyphsData/PointShare>
 
 #include <set>
 #include <sstream>
@@ -121,6 +122,23 @@ inline void expectBondedLengths(const PointData& frame)
     ASSERT_FALSE(lengths.empty());
     for (std::size_t k = 0; k < lengths.size(); ++k)
         ASSERT_TRUE(lengths[k] > 0.6 && lengths[k] < 1.4) << "bond " << k << ": " << lengths[k];
+}
+
+/** Expects a share of a file sorted by id (particle i is atom id i + 1, of total) to hold the bonds
+ * of truth between its own particles, by its own indices, and some to be held. */
+inline void expectShareHoldsItsOwnBonds(const PointData& part, const osgGlyphsData::PointShare& share,
+                                        uint64_t total, const IdPairs& truth)
+{
+    ASSERT_TRUE(part.getBonds());
+    const osgGlyphsData::PointRange range = osgGlyphsData::getShareRange(share, total);
+    IdPairs own, inShare;
+    for (const auto& [a, b] : truth)
+        if (uint64_t(a - 1) >= range.begin && uint64_t(b - 1) < range.end)
+            own.emplace(a, b);
+    for (const Bond& bond : *part.getBonds())
+        inShare.emplace(int64_t(range.begin + bond.first) + 1, int64_t(range.begin + bond.second) + 1);
+    EXPECT_GT(own.size(), 0u);
+    EXPECT_EQ(inShare, own);
 }
 
 }

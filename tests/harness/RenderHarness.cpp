@@ -202,6 +202,15 @@ Frame Renderer::capture() const
     return frame;
 }
 
+int countDifferingPixels(const Frame& a, const Frame& b)
+{
+    int differing = 0;
+    for (int y = 0; y < a.height(); ++y)
+        for (int x = 0; x < a.width(); ++x)
+            differing += a.colorAt(x, y) != b.colorAt(x, y) || a.depthAt(x, y) != b.depthAt(x, y);
+    return differing;
+}
+
 Frame renderPaged(Renderer& renderer, osg::Node* scene, int& frames, std::vector<Frame>* during)
 {
     osgViewer::Viewer* viewer = renderer.getViewer();

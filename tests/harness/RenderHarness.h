@@ -45,6 +45,9 @@ struct Frame
     double windowDepth(const osg::Vec3d& world) const { return project(world).z(); }
 };
 
+/** How many pixels of two frames of one size differ at all, in colour or depth. */
+int countDifferingPixels(const Frame& a, const Frame& b);
+
 /** Renders scenes through osgGlyphsHeadless::OffscreenViewer with a fixed camera: no automatic
  * near/far, no camera manipulator, so that analytic expectations hold exactly. */
 class Renderer

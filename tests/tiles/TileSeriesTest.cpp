@@ -79,15 +79,6 @@ void lookAtTheUnitCube(Renderer& renderer)
     renderer.setLookAt(osg::Vec3d(1.9, -1.2, 1.4), osg::Vec3d(0.5, 0.5, 0.5), osg::Vec3d(0.0, 0.0, 1.0));
 }
 
-int countDifferences(const Frame& a, const Frame& b)
-{
-    int differing = 0;
-    for (int y = 0; y < SIZE; ++y)
-        for (int x = 0; x < SIZE; ++x)
-            differing += a.colorAt(x, y) != b.colorAt(x, y) || a.depthAt(x, y) != b.depthAt(x, y);
-    return differing;
-}
-
 bool pagerIsBusy(osgDB::DatabasePager& pager)
 {
     return pager.getRequestsInProgress() || pager.getFileRequestListSize() > 0 ||
@@ -149,9 +140,10 @@ TEST(TileSeries, EveryFrameAtFullDetailIsItsFlatCloud)
         EXPECT_EQ(series->getShownRoot(), series->getChild(0)) << "frame " << frame << " read twice";
         EXPECT_TRUE(osgDB::Registry::instance()->getRefFromArchiveCache(series->getFramePath(frame)).valid())
             << "frame " << frame << "'s archive is not cached under its path";
-        EXPECT_EQ(countDifferences(paged, flats.back()), 0) << "frame " << frame << ": pixels that differ";
+        EXPECT_EQ(countDifferingPixels(paged, flats.back()), 0)
+            << "frame " << frame << ": pixels that differ";
     }
-    EXPECT_GT(countDifferences(flats[0], flats[1]), SIZE * SIZE / 10) << "the frames differ";
+    EXPECT_GT(countDifferingPixels(flats[0], flats[1]), SIZE * SIZE / 10) << "the frames differ";
     // Frame 2 shown, frame 0 prefetched (playback loops): frame 1 is let go, its archive closed.
     EXPECT_EQ(series->getPrefetchFrame(), 0u);
     EXPECT_FALSE(osgDB::Registry::instance()->getRefFromArchiveCache(series->getFramePath(1)).valid());
@@ -233,7 +225,7 @@ TEST(TileSeries, TheNextFrameIsPrefetchedWithItsTilesInView)
     EXPECT_FALSE(pagerIsBusy(*renderer.getViewer()->getDatabasePager())) << "tiles left to page in";
     const Frame first = renderer.capture();
     saveFrame(first, "series_prefetch_first");
-    EXPECT_EQ(countDifferences(first, flatRenderer.render(clouds[1].get())), 0)
+    EXPECT_EQ(countDifferingPixels(first, flatRenderer.render(clouds[1].get())), 0)
         << "the first picture of frame 1 is not its full detail";
     EXPECT_EQ(player->getStatistics().late, late);
 }

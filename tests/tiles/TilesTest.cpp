@@ -52,15 +52,6 @@ osgGlyphsTiles::TileOptions smallTiles()
     return options;
 }
 
-int countDifferences(const Frame& a, const Frame& b)
-{
-    int differing = 0;
-    for (int y = 0; y < SIZE; ++y)
-        for (int x = 0; x < SIZE; ++x)
-            differing += a.colorAt(x, y) != b.colorAt(x, y) || a.depthAt(x, y) != b.depthAt(x, y);
-    return differing;
-}
-
 int countCovered(const Frame& frame)
 {
     int covered = 0;
@@ -145,7 +136,7 @@ TEST_P(PagedTiles, FinestLevelRendersExactlyAsTheFlatCloud)
     options.compressedPositions = false;
     Frame flat, paged;
     renderFlatAndFinest(*cloud, name, options, flat, paged);
-    EXPECT_EQ(countDifferences(paged, flat), 0) << "pixels that differ in colour or depth";
+    EXPECT_EQ(countDifferingPixels(paged, flat), 0) << "pixels that differ in colour or depth";
 }
 
 // With 16-bit positions (the default), each glyph moves by at most half a grid step (1/131,064 of

@@ -20,18 +20,10 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from h5md_header import write_header  # noqa: E402
 from lammps_text import data_bonds, dump_frames  # noqa: E402
 
 TIMESTEP = 0.005
-
-
-def write_header(f):
-    h5md = f.create_group("h5md")
-    h5md.attrs["version"] = np.array([1, 1], dtype=np.int32)
-    h5md.create_group("author").attrs["name"] = "osgGlyphs tests"
-    creator = h5md.create_group("creator")
-    creator.attrs["name"] = "make_h5md.py (h5py)"
-    creator.attrs["version"] = h5py.version.version
 
 
 def write_particles(f, frames, order, with_ids):

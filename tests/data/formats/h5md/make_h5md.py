@@ -24,9 +24,14 @@ steps 0 to 100 by 20, columns id type x y z vx vy vz, box 0 to 8.397980956912537
 """
 
 import math
+import os
+import sys
 
 import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../.."))
+from h5md_header import write_header  # noqa: E402
 
 DUMP = "../melt.lammpstrj"
 BOX = 8.3979809569125372
@@ -47,15 +52,6 @@ def read_dump(path):
                 table = np.array(rows, dtype=np.float64)
                 frames.append((step, table))
     return frames
-
-
-def write_header(f):
-    h5md = f.create_group("h5md")
-    h5md.attrs["version"] = np.array([1, 1], dtype=np.int32)
-    h5md.create_group("author").attrs["name"] = "osgGlyphs tests"
-    creator = h5md.create_group("creator")
-    creator.attrs["name"] = "make_h5md.py (h5py)"
-    creator.attrs["version"] = h5py.version.version
 
 
 def write_box(group, edges, dtype=np.float64):
