@@ -40,6 +40,15 @@ function(expect_failure dir code pattern)
     endif()
 endfunction()
 
+# Fails unless the work folder's files a and b (relative paths) hold the same bytes.
+function(expect_same_file a b)
+    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK_DIR}/${a}" "${WORK_DIR}/${b}"
+        RESULT_VARIABLE different)
+    if(different)
+        message(FATAL_ERROR "${a} is not ${b}")
+    endif()
+endfunction()
+
 function(expect_files dir)
     foreach(file ${ARGN})
         if(NOT EXISTS "${WORK_DIR}/${dir}/${file}")
@@ -82,11 +91,7 @@ foreach(dir gz zst)
     foreach(pair "same0;frame0" "same5;frame5" "same10;frame10" "single5;frame5")
         list(GET pair 0 archive)
         list(GET pair 1 expected)
-        execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK_DIR}/${dir}/${archive}.osga"
-            "${WORK_DIR}/plain/${expected}.osga" RESULT_VARIABLE different)
-        if(different)
-            message(FATAL_ERROR "${dir}/${archive}.osga is not plain/${expected}.osga")
-        endif()
+        expect_same_file(${dir}/${archive}.osga plain/${expected}.osga)
     endforeach()
 endforeach()
 
@@ -108,12 +113,11 @@ expect_failure(gz 2 "out%s.osga: the output's pattern takes one integer conversi
 # Frames larger than --memory-glyphs are sorted through temporary files: the same archives, byte for
 # byte.
 run_in(gz "${CONVERT}" ${DUMP}.gz --frame-range 0:10:5 ${MAPPING} --memory-glyphs 100 small%04d.osga)
+if(NOT result EQUAL 0)
+    message(FATAL_ERROR "the conversion 100 glyphs at a time failed")
+endif()
 foreach(number 0000 0005 0010)
-    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK_DIR}/gz/small${number}.osga"
-        "${WORK_DIR}/gz/out${number}.osga" RESULT_VARIABLE different)
-    if(NOT result EQUAL 0 OR different)
-        message(FATAL_ERROR "small${number}.osga, converted 100 glyphs at a time, is not out${number}.osga")
-    endif()
+    expect_same_file(gz/small${number}.osga gz/out${number}.osga)
 endforeach()
 
 # A row of frame 3 (lines 1528 to 2036) damaged: that frame fails with a line naming it, the file
@@ -150,11 +154,7 @@ if(NOT result EQUAL 0 OR NOT err MATCHES "wrote 3 frames to series.osgt: 1500 gl
     message(FATAL_ERROR "the series was not written")
 endif()
 foreach(number 0000 0005 0010)
-    execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK_DIR}/gz/series_00${number}.osga"
-        "${WORK_DIR}/gz/out${number}.osga" RESULT_VARIABLE different)
-    if(different)
-        message(FATAL_ERROR "series_00${number}.osga is not out${number}.osga")
-    endif()
+    expect_same_file(gz/series_00${number}.osga gz/out${number}.osga)
 endforeach()
 file(READ "${WORK_DIR}/gz/series.osgt" index)
 if(NOT index MATCHES "osgGlyphsTiles::TileSeries" OR NOT index MATCHES "Frames 3 {[ \n]*\"series_000000.osga\" 0[ \n]*\"series_000005.osga\" 100[ \n]*\"series_000010.osga\" 200")
