@@ -1,8 +1,8 @@
 // libFuzzer target of the HDF5 formats (osgGlyphsHdf5). HDF5's own parser is not hardened
 // against malformed bytes, so the input does not become the file's bytes: it chooses a valid HDF5
 // file's STRUCTURE (tests/formats/Hdf5Layout.h writes it through HDF5's C library): which
-// datasets exist (H5MD elements, their value, step and time, the box; snapshot groups; named
-// datasets), their ranks, dims (disagreeing, empty, absurd), types (floats, integers, strings,
+// datasets exist (H5MD elements, their value, step and time, the box, connectivity; snapshot
+// groups; named datasets), their ranks, dims (disagreeing, empty, absurd), types (floats, integers, strings,
 // NaN), values, and gzip chunking. The file is opened with FrameSource as h5md or hdf5 and every
 // frame decoded, whole and as shares. Nothing may crash; every failure is one line naming the
 // file (and, from the reader, the dataset); a frame read twice is the same.
@@ -80,7 +80,11 @@ const char* const Paths[] = {"/particles/all/position/value",
                              "/PartType1/Coordinates",
                              "/PartType1/Velocities",
                              "/data/points",
-                             "/data/column"};
+                             "/data/column",
+                             "/connectivity/bonds",
+                             "/connectivity/bonds/value",
+                             "/connectivity/bonds/step",
+                             "/connectivity/angles"};
 const std::size_t PathCount = sizeof(Paths) / sizeof(Paths[0]);
 
 hsize_t dimFrom(uint8_t byte)
