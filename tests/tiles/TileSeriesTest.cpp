@@ -10,12 +10,15 @@
 #include <osgGlyphsTiles/TileSeries>
 #include <osgGlyphsTiles/TileSeriesPlayer>
 
+#include <osg/MatrixTransform>
 #include <osgDB/Archive>
 #include <osgDB/DatabasePager>
 #include <osgDB/FileNameUtils>
 #include <osgDB/ReadFile>
 #include <osgDB/Registry>
 #include <osgDB/WriteFile>
+#include <osgUtil/IntersectionVisitor>
+#include <osgUtil/LineSegmentIntersector>
 
 #include <cmath>
 #include <cstdio>
@@ -309,4 +312,43 @@ TEST(TileSeries, AnIndexThatLiesIsNoSeries)
         EXPECT_TRUE(!series || series->getNumFrames() == 0)
             << lie.first << ": read as a series of " << series->getNumFrames() << " frames";
     }
+}
+
+// Under a transform, a series pages in, draws and picks as its frame's cloud does: a ray down
+// through a glyph of the shown frame (moved by the transform) hits that glyph's top, at the
+// glyph's radius from its centre.
+TEST(TileSeries, PicksTheShownFrameUnderATransform)
+{
+    std::vector<osg::ref_ptr<GlyphCloud>> clouds;
+    for (unsigned int frame = 0; frame < 2; ++frame)
+        clouds.push_back(frameCloud(frame, 5000, 0.01f));
+    osg::ref_ptr<osgGlyphsTiles::TileSeries> series = writeSeries("series_pick", clouds, false);
+    ASSERT_TRUE(series.valid());
+    std::string error;
+    ASSERT_EQ(series->showFrameNow(1, error), osgGlyphsTiles::TileSeries::FRAME_SHOWN) << error;
+    const osg::Vec3d shift(2.0, -1.0, 0.5);
+    osg::ref_ptr<osg::MatrixTransform> moved = new osg::MatrixTransform(osg::Matrixd::translate(shift));
+    moved->addChild(series.get());
+    Renderer renderer(SIZE, SIZE);
+    renderer.setPerspective(30.0, 0.1, 20.0);
+    renderer.setLookAt(osg::Vec3d(1.9, -1.2, 1.4) + shift, osg::Vec3d(0.5, 0.5, 0.5) + shift,
+                       osg::Vec3d(0, 0, 1));
+    int frames = 0;
+    const Frame picture = renderPaged(renderer, moved.get(), frames);
+    saveFrame(picture, "series_pick");
+    int hits = 0;
+    for (unsigned int i = 0; i < 5000; i += 250)
+    {
+        const osg::Vec3d centre =
+            osg::Vec3d((*clouds[1]->getPositions())[i]) + clouds[1]->getOrigin() + shift;
+        osg::ref_ptr<osgUtil::LineSegmentIntersector> ray = new osgUtil::LineSegmentIntersector(
+            centre + osg::Vec3d(0.0, 0.0, 0.011), centre - osg::Vec3d(0.0, 0.0, 0.011));
+        osgUtil::IntersectionVisitor visitor(ray.get());
+        moved->accept(visitor);
+        ASSERT_TRUE(ray->containsIntersections()) << "glyph " << i;
+        const osg::Vec3d hit = ray->getFirstIntersection().getWorldIntersectPoint();
+        // From just above the glyph's top: the first surface is its top, unless a glyph overlaps it.
+        hits += std::abs((hit - centre).length() - 0.01) < 1e-5 && hit.z() > centre.z();
+    }
+    EXPECT_GE(hits, 18) << "of 20 rays, hitting their glyph's top";
 }
