@@ -94,13 +94,18 @@ Frame playUntilShown(Renderer& renderer, osgGlyphsTiles::TileSeries& series, std
 {
     osgViewer::Viewer* viewer = renderer.getViewer();
     osgDB::DatabasePager* pager = viewer->getDatabasePager();
-    // Until the frame is shown and the pager has stayed idle for three renders (it is idle before
-    // the first cull asks for anything).
+    std::string error;
+    // Until the frame is shown, the next one's root is read (on the series' thread, not the
+    // pager's) and the pager has stayed idle for three renders (it is idle before the first cull
+    // asks for anything).
     for (int frames = 0, idle = 0; frames < 4000 && idle < 3; ++frames)
     {
         viewer->frame();
         during.push_back(renderer.capture());
-        const bool settled = series.getShownFrame() == frame && !pagerIsBusy(*pager);
+        const std::size_t next = series.getPrefetchFrame();
+        const bool settled =
+            series.getShownFrame() == frame && !pagerIsBusy(*pager) &&
+            (next == SIZE_MAX || series.isFrameLoaded(next) || series.getFrameError(next, error));
         idle = settled ? idle + 1 : 0;
         if (pager->getDataToMergeListSize() == 0)
             OpenThreads::Thread::microSleep(2000);
@@ -213,6 +218,9 @@ TEST(TileSeries, TheNextFrameIsPrefetchedWithItsTilesInView)
     ASSERT_TRUE(series.valid());
     osg::ref_ptr<osgGlyphsTiles::TileSeriesPlayer> player =
         new osgGlyphsTiles::TileSeriesPlayer(series.get());
+    // Frame 1 is the last: no frame after it is prefetched (looping would read frame 0 ahead again
+    // and page its tiles in while frame 1 is checked).
+    player->setLoop(false);
     series->setUpdateCallback(player.get());
     Renderer renderer(SIZE, SIZE), flatRenderer(SIZE, SIZE);
     lookAtTheUnitCube(renderer);
