@@ -140,6 +140,13 @@ expect_files(plain broken00.osga broken02.osga broken04.osga broken10.osga)
 if(EXISTS "${WORK_DIR}/plain/broken03.osga")
     message(FATAL_ERROR "broken03.osga was written")
 endif()
+# Into a series: the index lists the 10 frames converted, not frame 3.
+run_in(plain "${CONVERT}" broken.lammpstrj --frame-range 0: brokenseries.osgt)
+file(READ "${WORK_DIR}/plain/brokenseries.osgt" index)
+if(NOT result EQUAL 1 OR NOT index MATCHES "Frames 10 {" OR index MATCHES "brokenseries_000003"
+        OR NOT index MATCHES "\"brokenseries_000004.osga\" 80")
+    message(FATAL_ERROR "the series' index does not list the frames converted, without frame 3:\n${index}")
+endif()
 
 # Frames that 8 of would pass --memory-glyphs: the colour range over fewer, said in a line.
 run_in(gz "${CONVERT}" ${DUMP}.gz --frame-range 0:10:5 --memory-glyphs 1200 --radius 0.4 few%04d.osga)
