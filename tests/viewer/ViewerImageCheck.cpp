@@ -160,8 +160,8 @@ int checkCoverage(int argc, char** argv)
             count += differs(*image, x, y, *image, 0, 0);
     const double fraction = static_cast<double>(count) / (image->s() * image->t());
     const double most = argc == 5 ? std::atof(argv[4]) : 1.0;
-    std::cout << "pixels unlike the background: " << fraction << " (at least " << argv[3] << ", at most " << most
-              << ")" << std::endl;
+    std::cout << "pixels unlike the background: " << fraction << " (at least " << argv[3] << ", at most "
+              << most << ")" << std::endl;
     return fraction >= std::atof(argv[3]) && fraction <= most ? 0 : 1;
 }
 
