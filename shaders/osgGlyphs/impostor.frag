@@ -129,7 +129,8 @@ bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
                              t, normal);
 #elif defined(OSGGLYPHS_SHAPE_SUPERQUADRIC)
     Span span;
-    if (superquadricSpan(origin, direction, fragSphere.xyz, fragInverseSemiAxes, fragExponents, span))
+    if (superquadricSpan(origin, direction, fragSphere.xyz, fragInverseSemiAxes, fragExponents,
+                         fragSuperquadricPowers, span))
         keepNearerDrawnPoint(origin, direction, span, t, normal);
 #elif defined(OSGGLYPHS_AXES_SHAPE)
     Span span;

@@ -15,15 +15,6 @@ float superquadricBoundScale(vec2 exponents)
     return min(exp2(0.5 * (excess.x + excess.y)), 1.7320508);
 }
 
-/** The radius of a sphere inside the superquadric: 2^(-(e - 1)/2) per exponent above 1 (an L^p norm
- * of two components, p <= 2, is at most 2^(1/p - 1/2) times their L^2 norm, so N(p) <= |p| / it);
- * 1 for exponents at most 1 (N <= the L^2 norm). */
-float superquadricInnerScale(vec2 exponents)
-{
-    vec2 excess = max(exponents - 1.0, 0.0);
-    return exp2(-0.5 * (excess.x + excess.y));
-}
-
 /** Four NDC corners (triangle-strip order) of a rectangle that contains the superquadric, and the
  * NDC depth of its nearest point, as ellipsoidScreenBound() gives them for the ellipsoid that holds
  * it; where the screen rectangle of the eight corners of its box (the superquadric lies in the box
@@ -50,9 +41,17 @@ bool superquadricScreenBound(vec3 centre, mat3 semiAxes, vec2 exponents, out vec
     return true;
 }
 
-/** N(p) and its gradient (N is homogeneous of degree 1: the gradient is that of p / max|p_i|,
- * where every power is at most 1). */
-float superquadricNorm(vec3 p, vec2 exponents, out vec3 gradient)
+/** What ray-casting a glyph of these exponents needs, computed once a glyph: the norm's powers
+ * (q, s, s / q, 1 / s). */
+vec4 superquadricPowers(vec2 exponents)
+{
+    float q = 2.0 / exponents.y, s = 2.0 / exponents.x;
+    return vec4(q, s, s / q, 1.0 / s);
+}
+
+/** N(p) and its gradient, for superquadricPowers() (N is homogeneous of degree
+ * 1: the gradient is that of p / max|p_i|, where every power is at most 1). */
+float superquadricNorm(vec3 p, vec4 powers, out vec3 gradient)
 {
     vec3 a = abs(p);
     float largest = max(max(a.x, a.y), a.z);
@@ -62,13 +61,12 @@ float superquadricNorm(vec3 p, vec2 exponents, out vec3 gradient)
         return 0.0;
     }
     a = max(a / largest, vec3(1e-20));
-    float q = 2.0 / exponents.y, s = 2.0 / exponents.x;
-    float xq = pow(a.x, q), yq = pow(a.y, q);
-    float rq = xq + yq;        // rho^q, rho the L^q norm of (x, y)
-    float rs = pow(rq, s / q); // rho^s
-    float zs = pow(a.z, s);
+    float xq = pow(a.x, powers.x), yq = pow(a.y, powers.x);
+    float rq = xq + yq;             // rho^q, rho the L^q norm of (x, y)
+    float rs = pow(rq, powers.z);   // rho^s
+    float zs = pow(a.z, powers.y);
     float ns = rs + zs; // N^s, at least 1 here
-    float n = pow(ns, 1.0 / s);
+    float n = pow(ns, powers.w);
     // dN/dz = N^(1-s) z^(s-1); dN/dx = N^(1-s) rho^(s-q) x^(q-1), which goes to 0 with rho (s >= 1);
     // powers as quotients.
     float outer = n / ns;
@@ -78,114 +76,96 @@ float superquadricNorm(vec3 p, vec2 exponents, out vec3 gradient)
 }
 
 /** H(t) = N(o + t d) - 1 along a ray in the unit frame, its derivative, and N's gradient there. */
-float superquadricAlong(vec3 o, vec3 d, float t, vec2 exponents, out float slope, out vec3 gradient)
+float superquadricAlong(vec3 o, vec3 d, float t, vec4 powers, out float slope, out vec3 gradient)
 {
-    float h = superquadricNorm(o + t * d, exponents, gradient) - 1.0;
+    float h = superquadricNorm(o + t * d, powers, gradient) - 1.0;
     slope = dot(gradient, d);
     return h;
 }
 
-/** Where the ray origin + t * direction runs inside the superquadric (centre, A^-1, exponents),
- * with the unit outward normals there; false if it misses. H is convex along the ray. A ray through
- * the sphere inside (superquadricInnerScale) has its points inside at once; for the others, the
- * minimum of H over the ray's span of the unit cube is bracketed by tangents (Kelley's cutting
- * planes, which also bound H from below: a bound above 0 is a certain miss). Once points inside
- * are known, Newton's steps from the outside point on each side converge monotonically to the
- * surface, never past it. */
+/** Where the ray origin + t * direction runs inside the superquadric (centre, A^-1, its
+ * exponents and superquadricPowers()), with the unit outward normals there; false if it misses.
+ *
+ * H is convex along the ray, so its tangent lies below it: Newton's steps from the near end of
+ * the ray's span through the bounds, where H > 0, never pass the entry point, and each lands
+ * where H >= 0. They converge to the entry monotonically (quadratically once near it), or reach a
+ * point where H > 0 no longer falls, beyond which it cannot fall to 0: a certain miss. The exit is
+ * found the same way from the far end. A ray that grazes the surface closer than 24 steps tell is
+ * taken as a miss. H is solved to 1e-5 of the glyph's size.
+ *
+ * Each pass of the one loop evaluates H once, at whatever point the ray asks for: the rays that a
+ * SIMD machine shades together, some seeking their entry and some their exit, share passes. */
 bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes, vec2 exponents,
-                      out Span span)
+                      vec4 powers, out Span span)
 {
-    vec3 o = inverseAxes * (origin - centre), d = inverseAxes * direction;
+    vec3 d = inverseAxes * direction;
+    // The ray from its point nearest the centre, t = 0 there: a glyph far smaller than its
+    // distance would otherwise leave t too few digits for H to reach the tolerance.
+    vec3 fromCentre = inverseAxes * (origin - centre);
+    float a = dot(d, d), shift = -dot(fromCentre, d) / a;
+    vec3 o = fromCentre + shift * d;
+    // The span through the unit cube, which holds the superquadric, and the sphere that does.
     vec3 safe = mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
     vec3 tA = (-1.0 - o) / safe, tB = (1.0 - o) / safe;
     vec3 tNear = min(tA, tB), tFar = max(tA, tB);
-    float lo = max(max(tNear.x, tNear.y), tNear.z), hi = min(min(tFar.x, tFar.y), tFar.z);
-    // Within the sphere of the bound too (superquadricBoundScale): most rays that miss stop here.
-    float a = dot(d, d), b = dot(o, d) / a, bound = superquadricBoundScale(exponents);
-    vec3 closest = o - b * d;
-    float h2 = bound * bound - dot(closest, closest);
+    float bound = superquadricBoundScale(exponents);
+    float h2 = bound * bound - dot(o, o);
     if (h2 < 0.0)
-        return false;
+        return false; // most rays that miss stop here
     float h = sqrt(h2 / a);
-    lo = max(lo, -b - h);
-    hi = min(hi, -b + h);
+    float lo = max(max(max(tNear.x, tNear.y), tNear.z), -h), hi = min(min(min(tFar.x, tFar.y), tFar.z), h);
     if (!(lo < hi))
         return false;
-    float gLo, gHi;
-    vec3 gradLo, gradHi = vec3(0.0);
-    float hLo = superquadricAlong(o, d, lo, exponents, gLo, gradLo);
-    float hHi = 0.0; // evaluated by the search, or for the way out: only they need it
-    // The points inside nearest each end: the inner sphere's span, or the one the search finds.
-    float insideFirst, insideLast;
-    float inner = superquadricInnerScale(exponents);
-    float innerH2 = inner * inner - dot(closest, closest);
-    if (innerH2 > 0.0)
+    // Where the ray leaves matters to a clip plane's cut, and to a ray that starts inside (then
+    // keepNearerDrawnPoint draws the near plane's cut); elsewhere the span's far end will do.
+#ifdef OSGGLYPHS_CLIP_PLANES
+    bool exitMatters = true;
+#else
+    bool exitMatters = lo < -shift;
+#endif
+    const float tolerance = 1e-5;
+    vec3 gradientLo = vec3(0.0), gradientHi = vec3(0.0);
+    bool seekingExit = false, found = false, missed = false;
+    float t = lo;
+    for (int steps = 0, pass = 0; pass < 40 && !found && !missed; ++pass)
     {
-        float innerH = sqrt(innerH2 / a);
-        insideFirst = -b - innerH;
-        insideLast = -b + innerH;
-    }
-    else
-    {
-        hHi = superquadricAlong(o, d, hi, exponents, gHi, gradHi);
-        float inside = hLo <= 0.0 ? lo : (hHi <= 0.0 ? hi : -1.0e30);
-        for (int i = 0; i < 24 && inside == -1.0e30; ++i)
+        float slope;
+        vec3 gradient;
+        float value = superquadricAlong(o, d, t, powers, slope, gradient);
+        ++steps;
+        if (!seekingExit)
         {
-            if (!(gLo < 0.0) || !(gHi > 0.0))
-                return false; // the minimum at an end, where H > 0
-            // The tangents at both ends meet at tx, where they bound H from below.
-            float tx = (hHi - hLo + gLo * lo - gHi * hi) / (gLo - gHi);
-            if (hLo + gLo * (tx - lo) > 0.0)
-                return false;
-            float t = (i % 3 == 2) ? 0.5 * (lo + hi) : clamp(tx, lo, hi);
-            float g;
-            vec3 grad;
-            float h = superquadricAlong(o, d, t, exponents, g, grad);
-            if (h <= 0.0)
-                inside = t;
-            else if (g < 0.0)
+            lo = t;
+            gradientLo = gradient;
+            if (value <= tolerance)
             {
-                lo = t;
-                hLo = h;
-                gLo = g;
-                gradLo = grad;
+                seekingExit = exitMatters;
+                found = !exitMatters;
+                steps = 0;
+                t = hi;
             }
+            else if (!(slope < 0.0) || steps >= 24)
+                missed = true;
             else
             {
-                hi = t;
-                hHi = h;
-                gHi = g;
-                gradHi = grad;
+                t -= value / slope;
+                missed = t > hi;
             }
         }
-        if (inside == -1.0e30)
-            return false; // a ray that grazes it closer than the steps tell
-        insideFirst = insideLast = inside;
-    }
-    float enter = lo, leave = hi;
-    for (int i = 0; i < 16 && hLo > 1e-5 && gLo < 0.0; ++i)
-    {
-        enter = min(enter - hLo / gLo, insideFirst);
-        hLo = superquadricAlong(o, d, enter, exponents, gLo, gradLo);
-    }
-    // Where the ray leaves matters to a clip plane's cut, and to a ray that starts inside (then
-    // keepNearerDrawnPoint draws the near plane's cut); elsewhere the bracket's end will do.
-#ifndef OSGGLYPHS_CLIP_PLANES
-    if (enter < 0.0)
-#endif
-    {
-        if (innerH2 > 0.0) // no search ran
-            hHi = superquadricAlong(o, d, hi, exponents, gHi, gradHi);
-        for (int i = 0; i < 16 && hHi > 1e-5 && gHi > 0.0; ++i)
+        else
         {
-            leave = max(leave - hHi / gHi, insideLast);
-            hHi = superquadricAlong(o, d, leave, exponents, gHi, gradHi);
+            hi = t;
+            gradientHi = gradient;
+            found = value <= tolerance || !(slope > 0.0) || steps >= 16;
+            t -= value / slope;
         }
     }
+    if (!found)
+        return false;
     mat3 toNormal = transpose(inverseAxes);
-    span = Span(enter, leave, normalize(toNormal * gradLo), vec3(0.0));
+    span = Span(lo + shift, hi + shift, normalize(toNormal * gradientLo), vec3(0.0));
 #ifdef OSGGLYPHS_CLIP_PLANES // the far side's normal is shown only through a clip plane's cut
-    span.nLeave = normalize(toNormal * gradHi);
+    span.nLeave = normalize(toNormal * gradientHi);
 #endif
     return true;
 }

@@ -20,6 +20,7 @@ flat OSGGLYPHS_VARYING mat3 fragInverseSemiAxes; // takes the ellipsoid to the u
 #endif
 #ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
 flat OSGGLYPHS_VARYING vec2 fragExponents;
+flat OSGGLYPHS_VARYING vec4 fragSuperquadricPowers;
 #endif
 
 #ifdef OSGGLYPHS_VARYINGS_OUT
@@ -38,6 +39,7 @@ void writeVaryings(Glyph glyph)
 #endif
 #ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
     fragExponents = glyph.exponents;
+    fragSuperquadricPowers = superquadricPowers(glyph.exponents);
 #endif
 }
 #endif

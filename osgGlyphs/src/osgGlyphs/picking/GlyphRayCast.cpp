@@ -83,8 +83,9 @@ double superquadricAlong(const dvec3& o, const dvec3& d, double t, const glm::dv
     return h;
 }
 
-/** superquadric.glsl: where the ray meets the superquadric, by its search for a point inside (the
- * shader first tries the inner sphere, a shortcut to the same point) and its Newton steps. */
+/** Where the ray meets the superquadric of superquadric.glsl, in double precision and by another
+ * route to the same surface: a search for a point inside, which brackets the entry and the exit,
+ * then Newton's steps to each (the shaders take Newton's steps from the near end alone). */
 bool intersectSuperquadric(const dvec3& origin, const dvec3& direction, const dvec3& centre,
                            const glm::dmat3& semiAxes, const glm::dvec2& exponents, double& tEnter,
                            double& tLeave, dvec3& nEnter)
