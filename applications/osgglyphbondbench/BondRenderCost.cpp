@@ -80,8 +80,9 @@ int measureBondRenderCost(std::size_t atoms, double bondsPerAtom, unsigned int f
         std::cerr << "osgglyphbondbench: " << error << "\n";
         return 1;
     }
-    osg::ref_ptr<osgGlyphs::GlyphCloud> bondCloud = osgGlyphsData::makeBondCloud(
-        *cloud, bonds, nullptr, osgGlyphsData::getDefaultBondRadius(*cloud), error);
+    osg::ref_ptr<osgGlyphs::GlyphCloud> bondCloud =
+        osgGlyphsData::makeBondCloud(*cloud, bonds, nullptr, osgGlyphsData::getDefaultBondRadius(*cloud),
+                                     error, osgGlyphsData::BondEnds::AtAtomSurfaces);
     if (!bondCloud)
     {
         std::cerr << "osgglyphbondbench: " << error << "\n";

@@ -111,7 +111,8 @@ public:
             if (hasBox && !osgGlyphsData::setNearestImages(atoms, box, _list, error))
                 return false;
         }
-        return osgGlyphsData::updateBondCloud(*_bonds, *_atoms, _list, hasBox ? &box : nullptr, error);
+        return osgGlyphsData::updateBondCloud(*_bonds, *_atoms, _list, hasBox ? &box : nullptr, error,
+                                              osgGlyphsData::BondEnds::AtAtomSurfaces);
     }
 
     std::size_t getNumBonds() const { return _list.size(); }
@@ -150,8 +151,8 @@ bool addBondCloud(osg::Group& group, osgGlyphs::GlyphCloud& atoms, const osgGlyp
                   std::string& description, std::string& error)
 {
     const float radius = options.radius > 0.0f ? options.radius : osgGlyphsData::getDefaultBondRadius(atoms);
-    osg::ref_ptr<osgGlyphs::GlyphCloud> bonds =
-        osgGlyphsData::makeBondCloud(atoms, {}, nullptr, radius, error);
+    osg::ref_ptr<osgGlyphs::GlyphCloud> bonds = osgGlyphsData::makeBondCloud(
+        atoms, {}, nullptr, radius, error, osgGlyphsData::BondEnds::AtAtomSurfaces);
     if (!bonds)
     {
         error = "--bond-radius: " + error;

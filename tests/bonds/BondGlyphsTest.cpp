@@ -321,10 +321,23 @@ TEST_F(BondRender, HalvesMatchAnExactCylinderAndMeetAtTheMidpoint)
     EXPECT_EQ(misplaced, 0) << nearSeam << " pixels near the seam left out";
 }
 
-TEST_F(BondRender, JoinsTheAtomsSpheresSeamlessly)
+namespace
+{
+
+/** Two atoms and their bond, its halves starting where ends says, rendered together. */
+class BondJoins : public ::testing::TestWithParam<osgGlyphsData::BondEnds>
+{
+protected:
+    Renderer renderer{200, 150};
+};
+
+}
+
+TEST_P(BondJoins, JoinTheAtomsSpheresSeamlessly)
 {
     // Two atoms of radius 0.5 and the bond of radius 0.3 between them, across a periodic face:
-    // the picture is the spheres and the two halves, each leaving its sphere toward the face.
+    // the picture is the spheres and the two whole halves, each leaving its sphere toward the face,
+    // whether the halves start at the atoms' centres or at their spheres.
     renderer.setLookAt(osg::Vec3d(0.5, -7.0, 2.0), osg::Vec3d(), osg::Vec3d(0.0, 0.0, 1.0));
     const PeriodicBox box(osg::BoundingBoxd(-3, -3, -3, 3, 3, 3));
     const osg::Vec3f a(-2.0f, 0.2f, 0.1f), b(2.1f, -0.1f, -0.2f); // 1.95 apart through the x faces
@@ -336,10 +349,12 @@ TEST_F(BondRender, JoinsTheAtomsSpheresSeamlessly)
     ASSERT_TRUE(osgGlyphsData::setNearestImages(atoms->getPositions()->asVector(), box, bonds, error))
         << error;
     ASSERT_EQ(bonds[0].image[0], -1);
-    osg::ref_ptr<GlyphCloud> bondCloud = osgGlyphsData::makeBondCloud(*atoms, bonds, &box, 0.3f, error);
+    osg::ref_ptr<GlyphCloud> bondCloud =
+        osgGlyphsData::makeBondCloud(*atoms, bonds, &box, 0.3f, error, GetParam());
     ASSERT_TRUE(bondCloud.valid()) << error;
     const Frame frame = renderer.render(group({atoms.get(), bondCloud.get()}).get());
-    saveFrame(frame, "bond_periodic_joins");
+    saveFrame(frame, GetParam() == osgGlyphsData::BondEnds::AtAtomSurfaces ? "bond_periodic_joins_surfaces"
+                                                                           : "bond_periodic_joins");
 
     // Truth: labels 0 and 1 the spheres, 2 and 3 the halves (red, green, red, green).
     const osg::Vec3d image = osg::Vec3d(b) + box.getImageOffset(bonds[0].image);
@@ -375,4 +390,50 @@ TEST_F(BondRender, JoinsTheAtomsSpheresSeamlessly)
     EXPECT_GT(cylinders, 200) << "the halves should show between the spheres";
     EXPECT_EQ(wrongColour, 0) << "of " << checked;
     EXPECT_LE(wrongDepth, checked / 200) << "of " << checked;
+}
+
+INSTANTIATE_TEST_SUITE_P(, BondJoins,
+                         ::testing::Values(osgGlyphsData::BondEnds::AtAtomCentres,
+                                           osgGlyphsData::BondEnds::AtAtomSurfaces),
+                         [](const ::testing::TestParamInfo<osgGlyphsData::BondEnds>& info) {
+                             return info.param == osgGlyphsData::BondEnds::AtAtomSurfaces ? "AtAtomSurfaces"
+                                                                                          : "AtAtomCentres";
+                         });
+
+TEST(BondGeometry, HalvesStartInsideTheirAtomsSpheresWhereTheyLeaveThem)
+{
+    // Atoms of radii 0.5 and 0.3 at 2 apart, and a pair 0.4 apart whose halves lie inside them.
+    osg::ref_ptr<GlyphCloud> atoms = atomCloud(
+        {osg::Vec3f(0, 0, 0), osg::Vec3f(2, 0, 0), osg::Vec3f(0, 3, 0), osg::Vec3f(0, 3.4f, 0)}, 0.5f);
+    atoms->setRadii(makeArray<osg::FloatArray>({0.5f, 0.3f, 0.5f, 0.5f}).get());
+    const float bondRadius = 0.2f;
+    std::string error;
+    osg::ref_ptr<GlyphCloud> bonds =
+        osgGlyphsData::makeBondCloud(*atoms, {bond(0, 1), bond(2, 3)}, nullptr, bondRadius, error,
+                                     osgGlyphsData::BondEnds::AtAtomSurfaces);
+    ASSERT_TRUE(bonds.valid()) << error;
+    const osg::Vec3Array& tails = *bonds->getPositions();
+    const osg::Vec3Array& vectors = *bonds->getVectors();
+    const float radii[4] = {0.5f, 0.3f, 0.5f, 0.5f};
+    const int atomOf[4] = {0, 1, 2, 3};
+    for (int half = 0; half < 4; ++half)
+    {
+        const osg::Vec3f centre = (*atoms->getPositions())[atomOf[half]];
+        const osg::Vec3f other = (*atoms->getPositions())[atomOf[half ^ 1]];
+        const osg::Vec3f midpoint = (centre + other) * 0.5f;
+        // Every half still ends at the bond's midpoint, along the bond.
+        expectVecNear(tails[half] + vectors[half], midpoint, "half " + std::to_string(half));
+        // Its start is 98% of the way to where the cylinder meets the sphere, capped at the
+        // midpoint; the rim of its flat end is inside the sphere.
+        const float radius = radii[atomOf[half]];
+        const float expected = 0.98f * std::min(std::sqrt(radius * radius - bondRadius * bondRadius),
+                                                (midpoint - centre).length());
+        EXPECT_NEAR((tails[half] - centre).length(), expected, 1e-5f) << "half " << half;
+        EXPECT_LT((tails[half] - centre).length2() + bondRadius * bondRadius, radius * radius)
+            << "half " << half;
+    }
+    // The default keeps the halves at the centres.
+    bonds = osgGlyphsData::makeBondCloud(*atoms, {bond(0, 1)}, nullptr, bondRadius, error);
+    ASSERT_TRUE(bonds.valid()) << error;
+    expectVecNear((*bonds->getPositions())[1], osg::Vec3f(2, 0, 0), "centre");
 }

@@ -41,6 +41,32 @@ void fillPerHalf(Array& target, const Array& atoms, const std::vector<Bond>& bon
     target.dirty();
 }
 
+/** Moves each half-bond's start from its atom's centre out to where it leaves the atom's sphere
+ * (BondEnds::AtAtomSurfaces). */
+void startHalvesAtAtomSurfaces(const osgGlyphs::GlyphCloud& atoms, const std::vector<Bond>& bonds,
+                               float bondRadius, std::vector<osg::Vec3f>& tails,
+                               std::vector<osg::Vec3f>& vectors)
+{
+    if (atoms.getShape() != osgGlyphs::GlyphShape::Sphere)
+        return;
+    const osg::FloatArray* radii = atoms.getRadii();
+    const double bondSquared = double(bondRadius) * double(bondRadius);
+    const double margin = 0.98;
+    for (std::size_t half = 0; half < tails.size(); ++half)
+    {
+        const Bond& bond = bonds[half / 2];
+        const uint32_t atom = half % 2 == 0 ? bond.first : bond.second;
+        const double radius =
+            radii ? (atom < radii->size() ? double((*radii)[atom]) : 0.0) : double(atoms.getRadius());
+        const double length = vectors[half].length();
+        if (!(radius * radius > bondSquared) || !(length > 0.0) || !std::isfinite(length))
+            continue;
+        const double inset = margin * std::min(std::sqrt(radius * radius - bondSquared), length);
+        tails[half] += vectors[half] * float(inset / length);
+        vectors[half] *= float((length - inset) / length);
+    }
+}
+
 }
 
 bool osgGlyphsData::computeHalfBonds(const std::vector<osg::Vec3f>& positions, const std::vector<Bond>& bonds,
@@ -131,7 +157,7 @@ float osgGlyphsData::getDefaultBondRadius(const osgGlyphs::GlyphCloud& atoms)
 osg::ref_ptr<osgGlyphs::GlyphCloud> osgGlyphsData::makeBondCloud(const osgGlyphs::GlyphCloud& atoms,
                                                                  const std::vector<Bond>& bonds,
                                                                  const PeriodicBox* box, float bondRadius,
-                                                                 std::string& error)
+                                                                 std::string& error, BondEnds ends)
 {
     if (!std::isfinite(bondRadius) || bondRadius <= 0.0f)
     {
@@ -152,20 +178,22 @@ osg::ref_ptr<osgGlyphs::GlyphCloud> osgGlyphsData::makeBondCloud(const osgGlyphs
     cloud->setCompressedAttributes(atoms.getCompressedAttributes());
     cloud->setVectors(new osg::Vec3Array);
     cloud->setPositions(new osg::Vec3Array);
-    if (!updateBondCloud(*cloud, atoms, bonds, box, error))
+    if (!updateBondCloud(*cloud, atoms, bonds, box, error, ends))
         return nullptr;
     return cloud;
 }
 
 bool osgGlyphsData::updateBondCloud(osgGlyphs::GlyphCloud& bondCloud, const osgGlyphs::GlyphCloud& atoms,
                                     const std::vector<Bond>& bonds, const PeriodicBox* box,
-                                    std::string& error)
+                                    std::string& error, BondEnds ends)
 {
     const osg::Vec3Array* positions = atoms.getPositions();
     static const std::vector<osg::Vec3f> none;
     std::vector<osg::Vec3f> tails, vectors;
     if (!computeHalfBonds(positions ? positions->asVector() : none, bonds, box, tails, vectors, error))
         return false;
+    if (ends == BondEnds::AtAtomSurfaces)
+        startHalvesAtAtomSurfaces(atoms, bonds, bondCloud.getRadius(), tails, vectors);
 
     // The atoms' map and range first: setting them rebuilds what the cloud draws, which must not
     // happen while its arrays are refilled below.
