@@ -6,7 +6,7 @@
     /usr/bin/python3 share/bench/results-page.py --output FILE
 
 Standard library only. It reads, from share/bench/:
-- results.csv and dense.csv, written by osgglyphbench --csv (applications/osgglyphbench,
+- results.csv, dense.csv and shapes.csv, written by osgglyphbench --csv (applications/osgglyphbench,
   BenchReport.cpp: one row per case; no date or machine column);
 - format_results.csv, written by share/bench/format_bench.py, and trajectory_results.csv, written
   by osgglyphtrajbench and share/bench/trajectory_bench.sh (rows of date, machine, suite, case,
@@ -215,6 +215,50 @@ def dense_series():
             line += [fmt(this), ratio(this / floor if this and floor else None),
                      fmt(number(row["overdraw"])) if row else "-", fmt(number(row["submitted"])) if row else "-"]
         lines.append(line)
+    out += table(header, lines)
+    return out
+
+
+def dense_shapes():
+    rows = read_rows("shapes.csv")
+    out = ["## Ellipsoids and superquadrics, dense", ""]
+    out += osgglyphbench_provenance("shapes.csv", rows)
+    out.append("")
+    out.append("Spheres of radius r = 0.4 times the mean spacing in the unit cube, and ellipsoids and "
+               "superquadrics of semi-axes r and r times two numbers uniform in [0.25, 1], in uniformly "
+               "random turns (the largest semi-axis is the spheres' radius); superquadrics' two exponents "
+               "uniform in [0.1, 1], from rounded boxes to ellipsoids. With culling off every glyph is drawn: "
+               "the cost of a glyph drawn. With occlusion culling (the default) the frame draws what can be "
+               "seen, and the other shapes, thinner than the spheres, hide less of the cloud behind them. "
+               "`/ sphere`: over the spheres' frame of the same N and culling. Fragments and submitted as "
+               "above.")
+    out.append("")
+    rows = [row for row in rows if row["technique"] == "geometry-shader"]
+    by_case = {(row["shape"], row["culling"], int(row["n"])): row for row in rows}
+    shapes = []
+    cullings = []
+    for row in rows:
+        if row["shape"] not in shapes:
+            shapes.append(row["shape"])
+        if row["culling"] not in cullings:
+            cullings.append(row["culling"])
+    counts = sorted({int(row["n"]) for row in rows})
+    header = ["shape", "N"]
+    for culling in cullings:
+        header += [f"culling {culling}: ms", "/ sphere", "fragments", "submitted"]
+    lines = []
+    for shape in shapes:
+        for n in counts:
+            line = [shape, count_name(n)]
+            for culling in cullings:
+                row = by_case.get((shape, culling, n))
+                sphere = by_case.get(("sphere", culling, n))
+                this = number(row["ms_median"]) if row else None
+                base = number(sphere["ms_median"]) if sphere else None
+                line += [fmt(this), ratio(this / base if this and base else None),
+                         fmt(number(row["overdraw"])) if row else "-",
+                         fmt(number(row["submitted"])) if row else "-"]
+            lines.append(line)
     out += table(header, lines)
     return out
 
@@ -461,7 +505,7 @@ def page():
            "Figures measured by hand and kept in no CSV (the tile converter, viewing paged archives, "
            "compositing over MPI, per-glyph ambient occlusion, screen effects, transparency) are not on this "
            "page; the last of them are in the README of commit 860f475 (`git show 860f475:README.md`).", ""]
-    for section in (paper_comparison, dense_series, formats, trajectories):
+    for section in (paper_comparison, dense_series, dense_shapes, formats, trajectories):
         out += section()
         out.append("")
     return "\n".join(out).rstrip("\n") + "\n"
