@@ -49,58 +49,47 @@ vec4 superquadricPowers(vec2 exponents)
     return vec4(q, s, s / q, 1.0 / s);
 }
 
-/** N(p) and its gradient, for superquadricPowers() (N is homogeneous of degree
- * 1: the gradient is that of p / max|p_i|, where every power is at most 1). */
-float superquadricNorm(vec3 p, vec4 powers, out vec3 gradient)
+/** L(t) = ln N(o + t d) along a ray in the unit frame, its derivative, and the gradient of ln N
+ * there, for superquadricPowers(), at points where N is about 1 or more: ln N = log2(N^s) ln 2 / s
+ * and its gradient is that of N^s over s N^s, so that N itself, one more power, is never needed. */
+float superquadricLogAlong(vec3 o, vec3 d, float t, vec4 powers, out float slope, out vec3 gradient)
 {
-    vec3 a = abs(p);
-    float largest = max(max(a.x, a.y), a.z);
-    if (!(largest > 0.0))
-    {
-        gradient = vec3(0.0);
-        return 0.0;
-    }
-    a = max(a / largest, vec3(1e-20));
+    vec3 p = o + t * d;
+    vec3 a = max(abs(p), vec3(1e-20));
     float xq = pow(a.x, powers.x), yq = pow(a.y, powers.x);
-    float rq = xq + yq;             // rho^q, rho the L^q norm of (x, y)
-    float rs = pow(rq, powers.z);   // rho^s
+    float rq = max(xq + yq, 1e-30);  // rho^q, rho the L^q norm of (x, y)
+    float rs = pow(rq, powers.z);     // rho^s
     float zs = pow(a.z, powers.y);
-    float ns = rs + zs; // N^s, at least 1 here
-    float n = pow(ns, powers.w);
-    // dN/dz = N^(1-s) z^(s-1); dN/dx = N^(1-s) rho^(s-q) x^(q-1), which goes to 0 with rho (s >= 1);
-    // powers as quotients.
-    float outer = n / ns;
-    float across = rq > 0.0 ? outer * rs / rq : 0.0;
-    gradient = sign(p) * vec3(across * xq / a.x, across * yq / a.y, outer * zs / a.z);
-    return largest * n;
-}
-
-/** H(t) = N(o + t d) - 1 along a ray in the unit frame, its derivative, and N's gradient there. */
-float superquadricAlong(vec3 o, vec3 d, float t, vec4 powers, out float slope, out vec3 gradient)
-{
-    float h = superquadricNorm(o + t * d, powers, gradient) - 1.0;
+    float ns = rs + zs;               // N^s
+    // d(N^s)/dx over s: rho^(s-q) x^(q-1), bounded since s >= 1; as rho^s (x^q / rho^q) / x, whose
+    // factors stay in range where rho^(s-q) alone would overflow near the z axis.
+    gradient = sign(p) * vec3(rs * (xq / rq) / a.x, rs * (yq / rq) / a.y, zs / a.z) / ns;
     slope = dot(gradient, d);
-    return h;
+    return log2(ns) * (0.69314718 * powers.w);
 }
 
 /** Where the ray origin + t * direction runs inside the superquadric (centre, A^-1, its
  * exponents and superquadricPowers()), with the unit outward normals there; false if it misses.
  *
- * H is convex along the ray, so its tangent lies below it: Newton's steps from the near end of
- * the ray's span through the bounds, where H > 0, never pass the entry point, and each lands
- * where H >= 0. They converge to the entry monotonically (quadratically once near it), or reach a
- * point where H > 0 no longer falls, beyond which it cannot fall to 0: a certain miss. The exit is
- * found the same way from the far end. A ray that grazes the surface closer than 24 steps tell is
- * taken as a miss. H is solved to 1e-5 of the glyph's size.
+ * H = N - 1 is convex along the ray, so its tangent lies below it: Newton's steps from the near
+ * end of the ray's span through the bounds, where H > 0, never pass the entry point, and each
+ * lands where H >= 0. They converge to the entry monotonically (quadratically once near it), or
+ * reach a point where H > 0 no longer falls, beyond which it cannot fall to 0: a certain miss. The
+ * exit is found the same way from the far end. A ray that grazes the surface closer than 24 steps
+ * tell is taken as a miss. H is solved to 1e-5 of the glyph's size.
  *
- * Each pass of the one loop evaluates H once, at whatever point the ray asks for: the rays that a
+ * The steps are taken from L = ln N, which costs a power less than N: Newton's step for H is
+ * (1 - e^-L) / -L', and (L - L^2/2) / -L' is a little shorter (by a term in L^3, so convergence
+ * stays quadratic) and so cannot pass the entry either.
+ *
+ * Each pass of the one loop evaluates L once, at whatever point the ray asks for: the rays that a
  * SIMD machine shades together, some seeking their entry and some their exit, share passes. */
 bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes, vec2 exponents,
                       vec4 powers, out Span span)
 {
     vec3 d = inverseAxes * direction;
     // The ray from its point nearest the centre, t = 0 there: a glyph far smaller than its
-    // distance would otherwise leave t too few digits for H to reach the tolerance.
+    // distance would otherwise leave t too few digits for L to reach the tolerance.
     vec3 fromCentre = inverseAxes * (origin - centre);
     float a = dot(d, d), shift = -dot(fromCentre, d) / a;
     vec3 o = fromCentre + shift * d;
@@ -131,7 +120,7 @@ bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes
     {
         float slope;
         vec3 gradient;
-        float value = superquadricAlong(o, d, t, powers, slope, gradient);
+        float value = superquadricLogAlong(o, d, t, powers, slope, gradient);
         ++steps;
         if (!seekingExit)
         {
@@ -148,12 +137,13 @@ bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes
                 missed = true;
             else
             {
-                t -= value / slope;
+                t -= (value - 0.5 * value * value) / slope;
                 missed = t > hi;
                 // Newton's error after the step is about H''/2 (H / H')^2: with H'' below 20 |d|^2
-                // (the shapes' curvature), within the tolerance where H < 1e-3 |H'| / |d|. The
-                // entry is then taken without evaluating H there, its normal from this point's
-                // gradient (within 2%); rays that graze the surface, with small H', are excluded.
+                // (the shapes' curvature), within the tolerance where H < 1e-3 |H'| / |d|, which
+                // L < 1e-3 |L'| / |d| implies (H <= L N, H' = N L'). The entry is then taken
+                // without evaluating L there, its normal from this point's gradient (within 2%);
+                // rays that graze the surface, with small L', are excluded.
                 if (value < -1e-3 * slope * inversesqrt(a) && !missed)
                 {
                     lo = t;
@@ -169,7 +159,7 @@ bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes
             hi = t;
             gradientHi = gradient;
             found = value <= tolerance || !(slope > 0.0) || steps >= 16;
-            t -= value / slope;
+            t -= (value - 0.5 * value * value) / slope;
         }
     }
     if (!found)
