@@ -46,8 +46,8 @@ OSGGLYPHBENCH_SOURCES = {
         "command": "osgglyphbench --techniques default,points-floor --culling off,occlusion --radius-spacing 0.4 "
         "--n 10000,31623,100000,316228,1000000 --frames 5 --plot dense.png",
     },
-    "29a5c665b3a93800e09b3aca56e6314368eea5f1": {
-        "commit": "3a86710",
+    "f18099f5c1fbcb0c30811b56c6c3deaa2709afbd": {
+        "commit": "4634041",
         "date": "2026-11-29",
         "machine": "llvmpipe, 2 cores",
         "said": "its commit message names the machine and the date",
