@@ -54,6 +54,29 @@ osg::ref_ptr<GlyphCloud> createDenseCloud(GlyphShape shape, unsigned int count =
     cloud->setScalars(scalars.get());
     cloud->setVectors(vectors.get());
     cloud->setShape(shape);
+    if (shape == GlyphShape::Ellipsoid || shape == GlyphShape::Superquadric)
+    {
+        // The other semi-axes a quarter to all of the largest, in uniformly random turns
+        // (Shoemake's quaternions); superquadrics from boxes to octahedra.
+        osg::ref_ptr<osg::Vec3Array> semiAxes = new osg::Vec3Array;
+        osg::ref_ptr<osg::Vec4Array> turns = new osg::Vec4Array;
+        osg::ref_ptr<osg::Vec2Array> exponents = new osg::Vec2Array;
+        for (unsigned int i = 0; i < count; ++i)
+        {
+            semiAxes->push_back(osg::Vec3(1.0f, 0.25f + 0.75f * unit(random), 0.25f + 0.75f * unit(random)) *
+                                radius);
+            const float u = unit(random), a = 2.0f * osg::PIf * unit(random),
+                        b = 2.0f * osg::PIf * unit(random);
+            const float sine = std::sqrt(1.0f - u), cosine = std::sqrt(u);
+            turns->push_back(osg::Vec4(sine * std::sin(a), sine * std::cos(a), cosine * std::sin(b),
+                                       cosine * std::cos(b)));
+            exponents->push_back(osg::Vec2(0.1f + 1.9f * unit(random), 0.1f + 1.9f * unit(random)));
+        }
+        cloud->setSemiAxes(semiAxes.get());
+        cloud->setOrientations(turns.get());
+        if (shape == GlyphShape::Superquadric)
+            cloud->setExponents(exponents.get());
+    }
     cloud->setCullingChunkSize(128);
     return cloud;
 }
@@ -157,7 +180,8 @@ TEST_P(CullingRender, OrbitWithAJumpMatchesTheUnculledCloud)
 
 INSTANTIATE_TEST_SUITE_P(Shapes, CullingRender,
                          ::testing::Values(GlyphShape::Sphere, GlyphShape::Cone, GlyphShape::Arrow,
-                                           GlyphShape::Cylinder),
+                                           GlyphShape::Cylinder, GlyphShape::Ellipsoid,
+                                           GlyphShape::Superquadric),
                          [](const ::testing::TestParamInfo<GlyphShape>& instance)
                          { return std::string(osgGlyphs::getShapeName(instance.param)); });
 
