@@ -46,8 +46,8 @@ OSGGLYPHBENCH_SOURCES = {
         "command": "osgglyphbench --techniques default,points-floor --culling off,occlusion --radius-spacing 0.4 "
         "--n 10000,31623,100000,316228,1000000 --frames 5 --plot dense.png",
     },
-    "f18099f5c1fbcb0c30811b56c6c3deaa2709afbd": {
-        "commit": "4634041",
+    "a9c944b674c92f3a08b98eb77975aa5184c065e2": {
+        "commit": "13f325c",
         "date": "2026-11-29",
         "machine": "llvmpipe, 2 cores",
         "said": "its commit message names the machine and the date",
