@@ -449,6 +449,10 @@ TEST(H5md, ConnectivityIsTheFramesBonds)
         expectWellFormed(*ordered);
         EXPECT_EQ(bondsByIndex(*ordered), truth);
     }
+    // Bonds that no step changes (pairs and ids fixed) are one list for every frame; pairs that
+    // depend on time are read for each frame.
+    EXPECT_EQ(frameOf(*byId, 1)->getBonds(), frameOf(*byId, 3)->getBonds());
+    EXPECT_NE(frameOf(*byIndex, 1)->getBonds(), frameOf(*byIndex, 3)->getBonds());
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("/connectivity/angles: tuples of 3 particles, not bonds: left out"),
               std::string::npos)

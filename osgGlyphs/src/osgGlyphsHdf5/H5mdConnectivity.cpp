@@ -98,6 +98,18 @@ std::vector<PairList> osgGlyphsHdf5::detail::describeConnectivity(hid_t file,
     return lists;
 }
 
+bool osgGlyphsHdf5::detail::isFixedConnectivity(const std::vector<PairList>& lists,
+                                                const std::vector<ParticleGroup>& groups)
+{
+    for (const PairList& list : lists)
+    {
+        const Element* ids = list.byId ? findElement(groups[list.group], "id") : nullptr;
+        if (list.pairs.timed || (ids && ids->timed))
+            return false;
+    }
+    return true;
+}
+
 std::shared_ptr<const PointData::BondList>
 osgGlyphsHdf5::detail::readConnectivity(const std::vector<PairList>& lists,
                                         const std::vector<ParticleGroup>& groups, int64_t step,

@@ -33,6 +33,10 @@ struct PairList
 std::vector<PairList> describeConnectivity(hid_t file, const std::vector<ParticleGroup>& groups,
                                            std::vector<std::string>& warnings, const Place& place);
 
+/** Whether the lists' bonds are the same at every step: neither a list's pairs nor the ids of a
+ * group that a list names by id depend on time. */
+bool isFixedConnectivity(const std::vector<PairList>& lists, const std::vector<ParticleGroup>& groups);
+
 /** The bonds of the lists at step, between the particles of range (of the groups' rows, in order)
  * as the frame holds them (PointData::getBonds()). Throws at place naming the list and the pair
  * when a pair names a particle the group lacks, or one particle twice. */

@@ -62,6 +62,7 @@ public:
         _columns = planColumns(_groups, "group", _path, _warnings);
         describeBox(place);
         _connectivity = describeConnectivity(_file.get(), _groups, _warnings, place);
+        _fixedConnectivity = isFixedConnectivity(_connectivity, _groups);
         if (_groups.size() > 1)
             _warnings.push_back(_path + ": " + std::to_string(_groups.size()) +
                                 " particle groups, read together with the column \"group\"");
@@ -101,8 +102,7 @@ public:
             osg::ref_ptr<PointData> data = readParticles(_groups, _columns, "group", step, share, place);
             setBox(*data, step, place);
             if (!_connectivity.empty())
-                data->setBonds(readConnectivity(_connectivity, _groups, step,
-                                                getShareRange(share, getFrameInfo(frame).points), place));
+                data->setBonds(bondsAt(step, getShareRange(share, getFrameInfo(frame).points), place));
             return data;
         }
         catch (const Hdf5Error& failure)
@@ -118,12 +118,28 @@ protected:
         Hdf5Lock lock;
         _groups.clear();
         _connectivity.clear();
+        _fixedBonds.reset();
         _edges = Element();
         _offset = Element();
         _file.reset();
     }
 
 private:
+    /** The bonds of the frame at step: read at each step, or once where they cannot change
+     * (isFixedConnectivity()), so that every frame holds the one list. Under the HDF5 lock. */
+    std::shared_ptr<const PointData::BondList> bondsAt(int64_t step, const PointRange& range,
+                                                       const Place& place) const
+    {
+        if (!_fixedConnectivity)
+            return readConnectivity(_connectivity, _groups, step, range, place);
+        if (!_fixedBonds || _fixedBondsRange.begin != range.begin || _fixedBondsRange.end != range.end)
+        {
+            _fixedBonds = readConnectivity(_connectivity, _groups, step, range, place);
+            _fixedBondsRange = range;
+        }
+        return _fixedBonds;
+    }
+
     void findGroups(const Place& place)
     {
         if (objectType(_file.get(), "/particles") != H5O_TYPE_GROUP)
@@ -274,6 +290,9 @@ private:
     Handle _file;
     std::vector<ParticleGroup> _groups;
     std::vector<PairList> _connectivity; // /connectivity's bonds
+    bool _fixedConnectivity = false;
+    mutable std::shared_ptr<const PointData::BondList> _fixedBonds; // of _fixedBondsRange
+    mutable PointRange _fixedBondsRange;
     std::vector<std::string> _columns;
     double _dimension = 3.0;
     Element _edges;
