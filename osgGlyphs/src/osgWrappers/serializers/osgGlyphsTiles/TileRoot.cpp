@@ -1,3 +1,5 @@
+#include "GlyphCount.h"
+
 #include <osgGlyphsTiles/TileRoot>
 
 #include <osgDB/InputStream>
@@ -25,7 +27,8 @@ bool budgetFromOptions(const osgDB::Options* options, double& budget)
         {
             std::istringstream value(word.substr(key.size()));
             double asked = -1.0;
-            if (value >> asked && value.eof() && asked >= 0.0 && asked <= 1e15 && asked == std::floor(asked))
+            if (value >> asked && value.eof() && asked >= 0.0 &&
+                asked <= osgGlyphsWrappers::MAX_GLYPH_COUNT && asked == std::floor(asked))
             {
                 budget = asked;
                 return true;
@@ -43,13 +46,11 @@ static bool checkGlyphBudget(const TileRoot&)
     return true;
 }
 
-// A double: budgets beyond 32 bits, exactly.
 static bool readGlyphBudget(osgDB::InputStream& is, TileRoot& root)
 {
-    double budget = 0.0;
-    is >> budget;
-    if (!(budget >= 0.0 && budget <= 1e15))
-        budget = osgGlyphsTiles::TileBudget::DEFAULT_MAX_GLYPHS;
+    std::size_t stored = osgGlyphsTiles::TileBudget::DEFAULT_MAX_GLYPHS;
+    osgGlyphsWrappers::readGlyphCount(is, stored);
+    double budget = static_cast<double>(stored);
     if (budgetFromOptions(is.getOptions(), budget))
         OSG_NOTICE << "osgGlyphs: glyph budget " << budget << " glyphs, from the options" << std::endl;
     root.setGlyphBudget(static_cast<std::size_t>(budget));
@@ -58,13 +59,7 @@ static bool readGlyphBudget(osgDB::InputStream& is, TileRoot& root)
 
 static bool writeGlyphBudget(osgDB::OutputStream& os, const TileRoot& root)
 {
-    // Text streams write doubles with 6 significant digits: there the budget goes as its whole
-    // digits, which the reader above (and every earlier one) reads as the same double.
-    if (os.isBinary())
-        os << static_cast<double>(root.getGlyphBudget());
-    else
-        os << std::to_string(root.getGlyphBudget());
-    os << std::endl;
+    osgGlyphsWrappers::writeGlyphCount(os, root.getGlyphBudget());
     return true;
 }
 

@@ -1,3 +1,5 @@
+#include "GlyphCount.h"
+
 #include <osgGlyphsTiles/TileSeries>
 
 #include <osgDB/InputStream>
@@ -116,19 +118,15 @@ static bool checkGlyphBudget(const TileSeries&)
 
 static bool readGlyphBudget(osgDB::InputStream& is, TileSeries& series)
 {
-    double budget = 0.0;
-    is >> budget;
-    series.setGlyphBudget(budget >= 0.0 && budget <= 1e15 ? static_cast<std::size_t>(budget) : 0);
+    std::size_t budget = 0;
+    osgGlyphsWrappers::readGlyphCount(is, budget);
+    series.setGlyphBudget(budget);
     return true;
 }
 
 static bool writeGlyphBudget(osgDB::OutputStream& os, const TileSeries& series)
 {
-    if (os.isBinary())
-        os << static_cast<double>(series.getGlyphBudget());
-    else
-        os << std::to_string(series.getGlyphBudget());
-    os << std::endl;
+    osgGlyphsWrappers::writeGlyphCount(os, series.getGlyphBudget());
     return true;
 }
 
