@@ -395,8 +395,8 @@ TEST_P(BondJoins, JoinTheAtomsSpheresSeamlessly)
 INSTANTIATE_TEST_SUITE_P(, BondJoins,
                          ::testing::Values(osgGlyphsData::BondEnds::AtAtomCentres,
                                            osgGlyphsData::BondEnds::AtAtomSurfaces),
-                         [](const ::testing::TestParamInfo<osgGlyphsData::BondEnds>& info) {
-                             return info.param == osgGlyphsData::BondEnds::AtAtomSurfaces ? "AtAtomSurfaces"
+                         [](const ::testing::TestParamInfo<osgGlyphsData::BondEnds>& ends) {
+                             return ends.param == osgGlyphsData::BondEnds::AtAtomSurfaces ? "AtAtomSurfaces"
                                                                                           : "AtAtomCentres";
                          });
 

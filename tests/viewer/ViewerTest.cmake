@@ -189,7 +189,8 @@ elseif(CASE STREQUAL "bonds")
     check(differ polymer.data.png atoms.png 0.01)
     expect_success(${BONDS_DIR}/polymer.lammpstrj --topology ${BONDS_DIR}/polymer.data --frame 4
         --output dump.png ${polymer})
-    if(NOT "${out}${err}" MATCHES "5 frames .*180 bonds listed in the file")
+    # "5+ frames" while the dump's frames are still being counted, on a loaded machine.
+    if(NOT "${out}${err}" MATCHES "5\\+? frames .*180 bonds listed in the file")
         message(FATAL_ERROR "expected the topology's bonds")
     endif()
     expect_success(${BONDS_DIR}/polymer.gsd --frame 4 --output gsd.png --size 160 120 --radius 0.35)
