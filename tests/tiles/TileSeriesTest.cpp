@@ -45,6 +45,15 @@ osg::ref_ptr<GlyphCloud> frameCloud(unsigned int frame, unsigned int count, floa
     return osgGlyphsData::createRandomCloud(options);
 }
 
+/** Frames 0 to frames - 1 of frameCloud(). */
+std::vector<osg::ref_ptr<GlyphCloud>> frameClouds(unsigned int frames, unsigned int count, float radius)
+{
+    std::vector<osg::ref_ptr<GlyphCloud>> clouds;
+    for (unsigned int frame = 0; frame < frames; ++frame)
+        clouds.push_back(frameCloud(frame, count, radius));
+    return clouds;
+}
+
 std::string framePath(const std::string& name, unsigned int frame)
 {
     return outputPath(name + "_" + std::to_string(frame) + ".osga");
@@ -120,9 +129,7 @@ Frame playUntilShown(Renderer& renderer, osgGlyphsTiles::TileSeries& series, std
 // and read back through osgDB, and names the frames relative to its folder.
 TEST(TileSeries, EveryFrameAtFullDetailIsItsFlatCloud)
 {
-    std::vector<osg::ref_ptr<GlyphCloud>> clouds;
-    for (unsigned int frame = 0; frame < 3; ++frame)
-        clouds.push_back(frameCloud(frame, 20000, 0.008f));
+    const std::vector<osg::ref_ptr<GlyphCloud>> clouds = frameClouds(3, 20000, 0.008f);
     osg::ref_ptr<osgGlyphsTiles::TileSeries> series = writeSeries("series_full", clouds, false);
     ASSERT_TRUE(series.valid()) << "the index read back";
     ASSERT_EQ(series->getNumFrames(), 3u);
@@ -164,9 +171,7 @@ TEST(TileSeries, EveryFrameAtFullDetailIsItsFlatCloud)
 TEST(TileSeries, AFrameChangeNeverLeavesHoles)
 {
     const float dense = 0.4f * std::cbrt(1.0f / 20000.0f);
-    std::vector<osg::ref_ptr<GlyphCloud>> clouds;
-    for (unsigned int frame = 0; frame < 3; ++frame)
-        clouds.push_back(frameCloud(frame, 20000, dense));
+    const std::vector<osg::ref_ptr<GlyphCloud>> clouds = frameClouds(3, 20000, dense);
     osg::ref_ptr<osgGlyphsTiles::TileSeries> series = writeSeries("series_holes", clouds, true);
     ASSERT_TRUE(series.valid());
     osg::ref_ptr<osgGlyphsTiles::TileSeriesPlayer> player =
@@ -211,9 +216,7 @@ TEST(TileSeries, AFrameChangeNeverLeavesHoles)
 // to it pages nothing in, and its first picture is already the full one.
 TEST(TileSeries, TheNextFrameIsPrefetchedWithItsTilesInView)
 {
-    std::vector<osg::ref_ptr<GlyphCloud>> clouds;
-    for (unsigned int frame = 0; frame < 2; ++frame)
-        clouds.push_back(frameCloud(frame, 20000, 0.008f));
+    const std::vector<osg::ref_ptr<GlyphCloud>> clouds = frameClouds(2, 20000, 0.008f);
     osg::ref_ptr<osgGlyphsTiles::TileSeries> series = writeSeries("series_prefetch", clouds, false);
     ASSERT_TRUE(series.valid());
     osg::ref_ptr<osgGlyphsTiles::TileSeriesPlayer> player =
@@ -245,9 +248,7 @@ TEST(TileSeries, TheNextFrameIsPrefetchedWithItsTilesInView)
 // over two loops; frames 0 and 3 play. Frames let go are closed (out of osgDB's archive cache).
 TEST(TileSeries, ACorruptOrMissingFrameIsReportedOnceAndTheOthersPlay)
 {
-    std::vector<osg::ref_ptr<GlyphCloud>> clouds;
-    for (unsigned int frame = 0; frame < 4; ++frame)
-        clouds.push_back(frameCloud(frame, 3000, 0.01f));
+    const std::vector<osg::ref_ptr<GlyphCloud>> clouds = frameClouds(4, 3000, 0.01f);
     osg::ref_ptr<osgGlyphsTiles::TileSeries> series = writeSeries("series_corrupt", clouds, true);
     ASSERT_TRUE(series.valid());
     std::filesystem::resize_file(framePath("series_corrupt", 1), 200);
@@ -327,9 +328,7 @@ TEST(TileSeries, AnIndexThatLiesIsNoSeries)
 // glyph's radius from its centre.
 TEST(TileSeries, PicksTheShownFrameUnderATransform)
 {
-    std::vector<osg::ref_ptr<GlyphCloud>> clouds;
-    for (unsigned int frame = 0; frame < 2; ++frame)
-        clouds.push_back(frameCloud(frame, 5000, 0.01f));
+    const std::vector<osg::ref_ptr<GlyphCloud>> clouds = frameClouds(2, 5000, 0.01f);
     osg::ref_ptr<osgGlyphsTiles::TileSeries> series = writeSeries("series_pick", clouds, false);
     ASSERT_TRUE(series.valid());
     std::string error;
