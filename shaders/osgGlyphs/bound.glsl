@@ -146,13 +146,12 @@ bool glyphBound(Glyph glyph, out vec2 corners[4], out float nearestNdcZ)
         return false;
     corners = vec2[4](box.xy, box.zy, box.xw, box.zw);
 #endif
+    vec2 occlusionBox[4] = corners;
 #ifdef OSGGLYPHS_AXES_SHAPE
-    if (!coversASample(corners) || isOccluded(inscribedEllipseBox(corners), nearestNdcZ))
-        return false;
-#else
-    if (!coversASample(corners) || isOccluded(corners, nearestNdcZ))
-        return false;
+    occlusionBox = inscribedEllipseBox(corners);
 #endif
+    if (!coversASample(corners) || isOccluded(occlusionBox, nearestNdcZ))
+        return false;
 #if defined(OSGGLYPHS_DEPTH_PEEL) && !defined(OSGGLYPHS_VECTOR_SHAPE) && !defined(OSGGLYPHS_AXES_SHAPE)
     if (isPeeledAwaySphere(glyph.sphere, corners))
         return false;

@@ -126,32 +126,26 @@ bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes
         {
             lo = t;
             gradientLo = gradient;
-            if (value <= tolerance)
+            bool entered = value <= tolerance;
+            if (!entered)
             {
-                seekingExit = exitMatters;
-                found = !exitMatters;
-                steps = 0;
-                t = hi;
-            }
-            else if (!(slope < 0.0) || steps >= 24)
-                missed = true;
-            else
-            {
+                missed = !(slope < 0.0) || steps >= 24;
                 t -= (value - 0.5 * value * value) / slope;
-                missed = t > hi;
+                missed = missed || t > hi;
                 // Newton's error after the step is about H''/2 (H / H')^2: with H'' below 20 |d|^2
                 // (the shapes' curvature), within the tolerance where H < 1e-3 |H'| / |d|, which
                 // L < 1e-3 |L'| / |d| implies (H <= L N, H' = N L'). The entry is then taken
                 // without evaluating L there, its normal from this point's gradient (within 2%);
                 // rays that graze the surface, with small L', are excluded.
-                if (value < -1e-3 * slope * inversesqrt(a) && !missed)
-                {
-                    lo = t;
-                    seekingExit = exitMatters;
-                    found = !exitMatters;
-                    steps = 0;
-                    t = hi;
-                }
+                entered = !missed && value < -1e-3 * slope * inversesqrt(a);
+                lo = entered ? t : lo;
+            }
+            if (entered)
+            {
+                seekingExit = exitMatters;
+                found = !exitMatters;
+                steps = 0;
+                t = hi;
             }
         }
         else
