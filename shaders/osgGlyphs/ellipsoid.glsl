@@ -86,24 +86,37 @@ bool ellipsoidScreenBound(vec3 centre, mat3 semiAxes, out vec2 corners[4], out f
     return true;
 }
 
-/** Where the ray origin + t * direction (unit) runs inside the ellipsoid (centre, A^-1), with the
- * unit outward normals there; false if it misses. Solved in the frame where the ellipsoid is the
- * unit sphere, from the point of the ray nearest its centre there. */
-bool ellipsoidSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes, out Span span)
+/** The ellipsoid's quadric Q = A^-T A^-1, which holds the points x with (x - centre)^T Q
+ * (x - centre) <= 1: its diagonal and its elements xy, xz and yz. Six numbers, where A^-1 takes nine:
+ * what a glyph hands its fragments costs a software rasteriser for each vertex. */
+void ellipsoidQuadric(mat3 semiAxes, out vec3 diagonal, out vec3 offDiagonal)
 {
-    vec3 o = inverseAxes * (origin - centre), d = inverseAxes * direction;
-    float a = dot(d, d), b = dot(o, d) / a;
-    vec3 closest = o - b * d;
-    float h2 = 1.0 - dot(closest, closest);
+    mat3 inverse = inverseSemiAxes(semiAxes);
+    mat3 q = transpose(inverse) * inverse;
+    diagonal = vec3(q[0][0], q[1][1], q[2][2]);
+    offDiagonal = vec3(q[1][0], q[2][0], q[2][1]);
+}
+
+/** Where the ray origin + t * direction (unit) runs inside the ellipsoid (centre, ellipsoidQuadric()),
+ * with the unit outward normals there; false if it misses. Solved from the point of the ray nearest
+ * the centre in the quadric's metric. */
+bool ellipsoidSpan(vec3 origin, vec3 direction, vec3 centre, vec3 diagonal, vec3 offDiagonal, out Span span)
+{
+    mat3 q = mat3(diagonal.x, offDiagonal.x, offDiagonal.y, offDiagonal.x, diagonal.y, offDiagonal.z, offDiagonal.y,
+                  offDiagonal.z, diagonal.z);
+    vec3 qd = q * direction;
+    float a = dot(direction, qd), b = dot(origin - centre, qd) / a;
+    vec3 closest = origin - centre - b * direction;
+    // The gradient of (x - centre)^T Q (x - centre) / 2, Q (x - centre), is linear along the ray.
+    vec3 qClosest = q * closest;
+    float h2 = 1.0 - dot(closest, qClosest);
     if (h2 < 0.0)
         return false;
     float h = sqrt(h2 / a);
-    // The gradient of |A^-1 (x - centre)|^2 / 2 is A^-T A^-1 (x - centre). The far side's normal is
-    // shown only through a clip plane's cut.
-    mat3 toNormal = transpose(inverseAxes);
-    span = Span(-b - h, -b + h, normalize(toNormal * (closest - h * d)), vec3(0.0));
+    // The far side's normal is shown only through a clip plane's cut.
+    span = Span(-b - h, -b + h, normalize(qClosest - h * qd), vec3(0.0));
 #ifdef OSGGLYPHS_CLIP_PLANES
-    span.nLeave = normalize(toNormal * (closest + h * d));
+    span.nLeave = normalize(qClosest + h * qd);
 #endif
     return true;
 }

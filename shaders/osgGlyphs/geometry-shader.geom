@@ -64,9 +64,10 @@ void main()
         corners[2] = 2.0 * corners[2] - corners[0];
         numCorners = 3;
     }
+    GlyphVaryings varyings = glyphVaryings(glyph);
     for (int corner = 0; corner < numCorners; ++corner)
     {
-        writeVaryings(glyph);
+        writeVaryings(varyings);
         gl_Position = vec4(corners[corner], nearestNdcZ, 1.0);
         keepVertexFromClipPlanes();
         EmitVertex();

@@ -129,12 +129,11 @@ bool castRay(vec3 origin, vec3 direction, out float t, out vec3 normal)
                              t, normal);
 #elif defined(OSGGLYPHS_SHAPE_SUPERQUADRIC)
     Span span;
-    if (superquadricSpan(origin, direction, fragSphere.xyz, fragInverseSemiAxes, fragExponents,
-                         fragSuperquadricPowers, span))
+    if (superquadricSpan(origin, direction, fragSphere.xyz, fragInverseSemiAxes, fragSuperquadricPowers, span))
         keepNearerDrawnPoint(origin, direction, span, t, normal);
 #elif defined(OSGGLYPHS_AXES_SHAPE)
     Span span;
-    if (ellipsoidSpan(origin, direction, fragSphere.xyz, fragInverseSemiAxes, span))
+    if (ellipsoidSpan(origin, direction, fragSphere.xyz, fragQuadricDiagonal, fragQuadricOffDiagonal, span))
         keepNearerDrawnPoint(origin, direction, span, t, normal);
 #else
     float tEnter, tLeave;

@@ -41,17 +41,18 @@ bool superquadricScreenBound(vec3 centre, mat3 semiAxes, vec2 exponents, out vec
     return true;
 }
 
-/** What ray-casting a glyph of these exponents needs, computed once a glyph: the norm's powers
- * (q, s, s / q, 1 / s). */
+/** What ray-casting a glyph of these exponents needs, computed once a glyph: the norm's powers q,
+ * s and s / q, and superquadricBoundScale(). */
 vec4 superquadricPowers(vec2 exponents)
 {
     float q = 2.0 / exponents.y, s = 2.0 / exponents.x;
-    return vec4(q, s, s / q, 1.0 / s);
+    return vec4(q, s, s / q, superquadricBoundScale(exponents));
 }
 
 /** L(t) = ln N(o + t d) along a ray in the unit frame, its derivative, and the gradient of ln N
- * there, for superquadricPowers(), at points where N is about 1 or more: ln N = log2(N^s) ln 2 / s
- * and its gradient is that of N^s over s N^s, so that N itself, one more power, is never needed. */
+ * there, for the norm's powers (q, s, s / q, 1 / s), at points where N is about 1 or more:
+ * ln N = log2(N^s) ln 2 / s and its gradient is that of N^s over s N^s, so that N itself, one more
+ * power, is never needed. */
 float superquadricLogAlong(vec3 o, vec3 d, float t, vec4 powers, out float slope, out vec3 gradient)
 {
     vec3 p = o + t * d;
@@ -68,8 +69,8 @@ float superquadricLogAlong(vec3 o, vec3 d, float t, vec4 powers, out float slope
     return log2(ns) * (0.69314718 * powers.w);
 }
 
-/** Where the ray origin + t * direction runs inside the superquadric (centre, A^-1, its
- * exponents and superquadricPowers()), with the unit outward normals there; false if it misses.
+/** Where the ray origin + t * direction runs inside the superquadric (centre, A^-1 and
+ * superquadricPowers()), with the unit outward normals there; false if it misses.
  *
  * H = N - 1 is convex along the ray, so its tangent lies below it: Newton's steps from the near
  * end of the ray's span through the bounds, where H > 0, never pass the entry point, and each
@@ -84,9 +85,10 @@ float superquadricLogAlong(vec3 o, vec3 d, float t, vec4 powers, out float slope
  *
  * Each pass of the one loop evaluates L once, at whatever point the ray asks for: the rays that a
  * SIMD machine shades together, some seeking their entry and some their exit, share passes. */
-bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes, vec2 exponents,
-                      vec4 powers, out Span span)
+bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes, vec4 powers, out Span span)
 {
+    float bound = powers.w;
+    vec4 normPowers = vec4(powers.xyz, 1.0 / powers.y);
     vec3 d = inverseAxes * direction;
     // The ray from its point nearest the centre, t = 0 there: a glyph far smaller than its
     // distance would otherwise leave t too few digits for L to reach the tolerance.
@@ -97,7 +99,6 @@ bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes
     vec3 safe = mix(d, vec3(1e-30), lessThan(abs(d), vec3(1e-30)));
     vec3 tA = (-1.0 - o) / safe, tB = (1.0 - o) / safe;
     vec3 tNear = min(tA, tB), tFar = max(tA, tB);
-    float bound = superquadricBoundScale(exponents);
     float h2 = bound * bound - dot(o, o);
     if (h2 < 0.0)
         return false; // most rays that miss stop here
@@ -120,7 +121,7 @@ bool superquadricSpan(vec3 origin, vec3 direction, vec3 centre, mat3 inverseAxes
     {
         float slope;
         vec3 gradient;
-        float value = superquadricLogAlong(o, d, t, powers, slope, gradient);
+        float value = superquadricLogAlong(o, d, t, normPowers, slope, gradient);
         ++steps;
         if (!seekingExit)
         {
