@@ -589,7 +589,6 @@ osg::BoundingBox GlyphCloud::computeGlyphBox(unsigned int i) const
     const osg::Vec3 p = drawnPosition(i);
     if (hasEllipsoidShape())
     {
-        // The extent along each of the cloud's axes: the length of that row of the semi-axes.
         // The extent along each of the cloud's axes: the support of the shape in the frame where its
         // semi-axes are unit, along that row of the semi-axes (for an ellipsoid, the row's length).
         osg::Vec3 semiAxes[3];
