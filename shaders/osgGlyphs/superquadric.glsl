@@ -7,12 +7,20 @@
 
 #ifdef OSGGLYPHS_SHAPE_SUPERQUADRIC
 
-/** A scale of the semi-axes whose ellipsoid holds the superquadric: 2^((1 - e)/2) per exponent
- * below 1 (the L^2 norm over an L^p norm of two components, p >= 2), at most sqrt(3) (the cube). */
+/** The scale of the semi-axes whose ellipsoid holds the superquadric, touching it: the largest
+ * |p|_2 where N(p) = 1. Over the L^q unit circle, |(x, y)|_2 is at most k = 2^(1/2 - 1/q) for
+ * q >= 2 (on the diagonals), else 1; then, by Hoelder's inequality, k^2 u^2 + v^2 with
+ * u^s + v^s = 1 (s > 2) is at most (k^2r + 1)^(1/r), r = s / (s - 2) = 1 / (1 - e1), and at most
+ * k^2 for s <= 2. In logarithms, so that k^2r cannot overflow as e1 approaches 1; 1e-4 wider,
+ * so that rounding cannot cut the points where it touches. */
 float superquadricBoundScale(vec2 exponents)
 {
-    vec2 excess = max(1.0 - exponents, 0.0);
-    return min(exp2(0.5 * (excess.x + excess.y)), 1.7320508);
+    float logK = 0.5 * max(1.0 - exponents.y, 0.0);
+    float inverseR = max(1.0 - exponents.x, 0.0);
+    float logScale = logK;
+    if (inverseR > 0.0)
+        logScale += 0.5 * inverseR * log2(1.0 + exp2(-2.0 * logK / inverseR));
+    return 1.0001 * exp2(logScale);
 }
 
 /** Four NDC corners (triangle-strip order) of a rectangle that contains the superquadric, and the

@@ -59,8 +59,11 @@ unsigned int toExponentByte(float exponent)
     return static_cast<unsigned int>(std::lround(std::clamp(exponent, MIN_EXPONENT, MAX_EXPONENT) * 127.0f));
 }
 
-/** superquadric.glsl's superquadricBoundScale(): the scale of the semi-axes whose ellipsoid holds
- * the superquadric. */
+/** A scale of the semi-axes whose ellipsoid holds the superquadric, the radius it is packed against:
+ * 2^((1 - e)/2) per exponent below 1, at most sqrt(3). superquadric.glsl bounds the glyph on screen
+ * by the ellipsoid that touches it, up to 7% smaller; this one stays, since a dataset's largest
+ * radius (sqrt(3) times its largest semi-axis, where any exponents are small) is then its tiles'
+ * too, and a tile's glyphs decode as the whole cloud's. */
 float superquadricBoundScale(const osg::Vec2& exponents)
 {
     const float excess = std::max(1.0f - exponents.x(), 0.0f) + std::max(1.0f - exponents.y(), 0.0f);
