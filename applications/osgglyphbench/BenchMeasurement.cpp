@@ -67,13 +67,6 @@ double timeFrame(osgGlyphsHeadless::OffscreenViewer& viewer, unsigned int frame)
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-double median(std::vector<double> values)
-{
-    std::sort(values.begin(), values.end());
-    const size_t middle = values.size() / 2;
-    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
-}
-
 /** The fraction of pixels the scene drew on (the clear colour is transparent black). */
 double getCoverage(const osg::Image& image)
 {
@@ -185,6 +178,13 @@ bool measure(const BenchSettings& settings, osg::Node* scene, double& firstFrame
     return true;
 }
 
+}
+
+double median(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    const size_t middle = values.size() / 2;
+    return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
 bool measureArchive(const BenchSettings& settings, BenchResult& result, unsigned int& pagingFrames,

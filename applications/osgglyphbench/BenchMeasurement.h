@@ -10,6 +10,7 @@
 #include <osg/Camera>
 
 #include <string>
+#include <vector>
 
 /** Looks at the unit cube's centre from a distance that fits its bounding sphere into the 30 degree
  * field of view, orbiting a degree a frame: the view of every benchmark frame, in one process or
@@ -68,6 +69,9 @@ bool measureCase(const BenchCase& c, float radius, const BenchSettings& settings
  * orbit as the cases. False with a one-line error when it cannot be read or drawn. */
 bool measureArchive(const BenchSettings& settings, BenchResult& result, unsigned int& pagingFrames,
                     std::string& error);
+
+/** The median of the values (the mean of the middle two for an even count); one value at least. */
+double median(std::vector<double> values);
 
 /** Prints the cost of a frame that draws nothing: clearing and reading the colour buffer back. */
 void printFrameOverhead(const BenchSettings& settings);

@@ -209,6 +209,7 @@ void readValues(osg::ArgumentParser& arguments, BenchSettings& settings)
 {
     arguments.read("--size", settings.width, settings.height);
     arguments.read("--frames", settings.frames);
+    arguments.read("--repeat", settings.repeat);
     arguments.read("--peel-layers", settings.peelLayers);
     arguments.read("--radius", settings.radius);
     arguments.read("--radius-spacing", settings.radiusSpacing);
@@ -222,6 +223,8 @@ void readValues(osg::ArgumentParser& arguments, BenchSettings& settings)
         arguments.reportError("--size: width and height must be positive");
     if (settings.frames == 0)
         arguments.reportError("--frames: at least one frame");
+    if (settings.repeat == 0)
+        arguments.reportError("--repeat: at least one pass");
     if (settings.peelLayers == 0)
         arguments.reportError("--peel-layers: at least one layer");
 }
@@ -269,12 +272,17 @@ void describeBenchOptions(osg::ApplicationUsage& usage)
         "Techniques to measure: " + getTechniqueChoices() +
             " (default: all). 'default' is the library's default technique. A technique that cannot "
             "draw a shape yet is skipped; points-floor is always measured.");
-    usage.addCommandLineOption("--shapes <a,b,...>",
-                               "Shapes: sphere, cone, arrow, cylinder (default sphere).");
+    usage.addCommandLineOption(
+        "--shapes <a,b,...>",
+        "Shapes: sphere, cone, arrow, cylinder, ellipsoid, superquadric (default sphere).");
     usage.addCommandLineOption("--n <n1,n2,...>", "Glyph counts (default 100,316,1000,...,316228,1000000).");
     usage.addCommandLineOption("--size <w> <h>", "Image size in pixels (default 800 600).");
     usage.addCommandLineOption("--frames <k>",
                                "Timed frames per case, after one warm-up frame (default 10).");
+    usage.addCommandLineOption(
+        "--repeat <k>",
+        "Measure all the cases k times, one pass after another, and keep each case's median over the "
+        "passes (default 1): the ratios between cases of one run then outlast the machine's slow spells.");
     usage.addCommandLineOption("--radius <r>",
                                "Glyph radius (default: getDefaultRandomRadius(n) = 0.5/sqrt(n), "
                                "at most 0.1, for a constant covered fraction of the view).");

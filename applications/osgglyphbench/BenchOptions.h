@@ -52,6 +52,8 @@ struct BenchSettings
     int width = 800;
     int height = 600;
     unsigned int frames = 10;
+    /** Passes over all the cases (--repeat): each case keeps the median of its passes' medians. */
+    unsigned int repeat = 1;
     float radius = 0.0f;        // <= 0: getDefaultRandomRadius(n)
     float radiusSpacing = 0.0f; // > 0: the radius is this multiple of the mean spacing n^(-1/3)
     std::vector<osgGlyphs::GlyphCulling> cullings = {osgGlyphs::GlyphCulling::Occlusion};

@@ -120,12 +120,13 @@ bool openCsv(const BenchSettings& settings, std::ofstream& csv)
     return true;
 }
 
-/** Measures the cases in turn, skipping those over --max-ms; false, with the error printed, when
- * a case cannot be measured (no headless context, a glyph program that fails). */
-bool measureCases(const std::vector<BenchCase>& cases, const BenchSettings& settings, std::ofstream& csv,
-                  std::vector<BenchResult>& results, std::string& renderer)
+/** Measures the cases in turn, skipping those over --max-ms, into results and the cases measured,
+ * and writes each row to the CSV where there is one; false, with the error printed, when a case
+ * cannot be measured (no headless context, a glyph program that fails). */
+bool measureCases(const std::vector<BenchCase>& cases, const BenchSettings& settings, CaseRadii& radii,
+                  std::ofstream* csv, std::vector<BenchResult>& results, std::vector<BenchCase>& measured,
+                  std::string& renderer)
 {
-    CaseRadii radii;
     for (size_t i = 0; i < cases.size(); ++i)
     {
         const BenchCase& c = cases[i];
@@ -143,10 +144,41 @@ bool measureCases(const std::vector<BenchCase>& cases, const BenchSettings& sett
             return false;
         }
         printProgress(result, i + 1, cases.size());
-        if (csv.is_open())
-            writeCsvRow(csv, result, settings);
+        if (csv && csv->is_open())
+            writeCsvRow(*csv, result, settings);
         results.push_back(result);
+        measured.push_back(c);
     }
+    return true;
+}
+
+/** Measures the cases of the first pass settings.repeat - 1 times more, in the same order, and
+ * keeps for each the median of its passes' medians, the least minimum and the greatest maximum;
+ * the rest (coverage, fragments, glyphs sent) is the first pass's. */
+bool repeatCases(const std::vector<BenchCase>& measured, const BenchSettings& settings, CaseRadii& radii,
+                 std::vector<BenchResult>& results, std::string& renderer)
+{
+    std::vector<std::vector<double>> medians(results.size());
+    for (size_t i = 0; i < results.size(); ++i)
+        medians[i].push_back(results[i].msMedian);
+    for (unsigned int pass = 2; pass <= settings.repeat; ++pass)
+    {
+        std::cout << "[pass " << pass << " of " << settings.repeat << "]" << std::endl;
+        std::vector<BenchResult> passResults;
+        std::vector<BenchCase> passCases;
+        BenchSettings unbounded = settings;
+        unbounded.maxMs = 0.0;
+        if (!measureCases(measured, unbounded, radii, nullptr, passResults, passCases, renderer))
+            return false;
+        for (size_t i = 0; i < results.size(); ++i)
+        {
+            medians[i].push_back(passResults[i].msMedian);
+            results[i].msMin = std::min(results[i].msMin, passResults[i].msMin);
+            results[i].msMax = std::max(results[i].msMax, passResults[i].msMax);
+        }
+    }
+    for (size_t i = 0; i < results.size(); ++i)
+        results[i].msMedian = median(medians[i]);
     return true;
 }
 
@@ -188,9 +220,17 @@ int runBenchmark(const BenchSettings& settings)
     printFrameOverhead(settings);
     const std::vector<BenchCase> cases = listCases(settings);
     std::vector<BenchResult> results;
+    std::vector<BenchCase> measured;
     std::string renderer;
-    if (!measureCases(cases, settings, csv, results, renderer))
+    CaseRadii radii;
+    // One pass writes its rows as it goes; several, the medians once all have run.
+    if (!measureCases(cases, settings, radii, settings.repeat == 1 ? &csv : nullptr, results, measured,
+                      renderer) ||
+        !repeatCases(measured, settings, radii, results, renderer))
         return 1;
+    for (const BenchResult& result : results)
+        if (settings.repeat > 1 && csv.is_open())
+            writeCsvRow(csv, result, settings);
     if (!settings.archive.empty() && !measureAndCompareArchive(settings, results))
         return 1;
     printLoad("at the end");
