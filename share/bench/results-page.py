@@ -21,6 +21,7 @@ import argparse
 import csv
 import hashlib
 import os
+import re
 import sys
 
 BENCH = os.path.dirname(os.path.abspath(__file__))
@@ -46,13 +47,13 @@ OSGGLYPHBENCH_SOURCES = {
         "command": "osgglyphbench --techniques default,points-floor --culling off,occlusion --radius-spacing 0.4 "
         "--n 10000,31623,100000,316228,1000000 --frames 5 --plot dense.png",
     },
-    "a9c944b674c92f3a08b98eb77975aa5184c065e2": {
-        "commit": "13f325c",
+    "2fadcfa5da0cffc65030721833dc04da10ed0b8e": {
+        "commit": "ca16cf1",
         "date": "2026-11-29",
         "machine": "llvmpipe, 2 cores",
         "said": "its commit message names the machine and the date",
         "command": "osgglyphbench --techniques geometry-shader --shapes sphere,ellipsoid,superquadric "
-        "--culling off,occlusion --n 30000,300000 --radius-spacing 0.4 --frames 10",
+        "--culling off,occlusion --n 30000,300000 --radius-spacing 0.4 --frames 10 --repeat 3",
     },
 }
 
@@ -123,8 +124,12 @@ def osgglyphbench_provenance(name, rows):
     source = OSGGLYPHBENCH_SOURCES.get(blob_id(os.path.join(BENCH, name)))
     sizes = sorted({f"{row['width']}x{row['height']}" for row in rows})
     frames = sorted({row["frames"] for row in rows}, key=int)
-    lines = [f"Source: `share/bench/{name}`, {len(rows)} cases, {', '.join(sizes)} pixels, the median of "
-             f"{' or '.join(frames)} orbiting frames per case."]
+    passes = re.search(r"--repeat (\d+)", source["command"]) if source else None
+    per_case = f"the median of {' or '.join(frames)} orbiting frames per case"
+    if passes:
+        per_case = (f"the median over {passes.group(1)} passes of each case's median of "
+                    f"{' or '.join(frames)} orbiting frames")
+    lines = [f"Source: `share/bench/{name}`, {len(rows)} cases, {', '.join(sizes)} pixels, {per_case}."]
     if source:
         machine = source["machine"] or "not recorded"
         lines.append(f"Machine: {machine}. Date: {source['date']}, the commit that added the CSV "
