@@ -35,6 +35,7 @@ osg::ref_ptr<osgGlyphs::GlyphCloud> createCloud(const BenchCase& c, float radius
     options.seed = settings.seed;
     options.shape = c.shape;
     options.radius = radius;
+    options.smallestAxis = settings.smallestAxis;
     osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = osgGlyphsData::createRandomCloud(options);
     cloud->setTechnique(osgGlyphs::createTechnique(c.technique).get());
     cloud->setCompressedAttributes(settings.compressedAttributes);

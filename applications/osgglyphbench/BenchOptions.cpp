@@ -213,6 +213,7 @@ void readValues(osg::ArgumentParser& arguments, BenchSettings& settings)
     arguments.read("--peel-layers", settings.peelLayers);
     arguments.read("--radius", settings.radius);
     arguments.read("--radius-spacing", settings.radiusSpacing);
+    arguments.read("--smallest-axis", settings.smallestAxis);
     settings.equalCoverage = arguments.read("--equal-coverage");
     arguments.read("--seed", settings.seed);
     arguments.read("--max-ms", settings.maxMs);
@@ -225,6 +226,8 @@ void readValues(osg::ArgumentParser& arguments, BenchSettings& settings)
         arguments.reportError("--frames: at least one frame");
     if (settings.repeat == 0)
         arguments.reportError("--repeat: at least one pass");
+    if (!(settings.smallestAxis > 0.0f && settings.smallestAxis <= 1.0f))
+        arguments.reportError("--smallest-axis: a share of the radius in (0, 1]");
     if (settings.peelLayers == 0)
         arguments.reportError("--peel-layers: at least one layer");
 }
@@ -286,6 +289,10 @@ void describeBenchOptions(osg::ApplicationUsage& usage)
     usage.addCommandLineOption("--radius <r>",
                                "Glyph radius (default: getDefaultRandomRadius(n) = 0.5/sqrt(n), "
                                "at most 0.1, for a constant covered fraction of the view).");
+    usage.addCommandLineOption(
+        "--smallest-axis <f>",
+        "Ellipsoids' and superquadrics' two other semi-axes, uniform in [f, 1] times the largest, the "
+        "radius (default 0.25); 1 draws ellipsoids as spheres, to compare shapes that hide as much.");
     usage.addCommandLineOption(
         "--radius-spacing <f>",
         "Dense data: the radius is f times the mean spacing of the points, n^(-1/3) in "

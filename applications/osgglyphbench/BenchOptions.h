@@ -56,6 +56,7 @@ struct BenchSettings
     unsigned int repeat = 1;
     float radius = 0.0f;        // <= 0: getDefaultRandomRadius(n)
     float radiusSpacing = 0.0f; // > 0: the radius is this multiple of the mean spacing n^(-1/3)
+    float smallestAxis = 0.25f; // ellipsoids' and superquadrics' other semi-axes: [this, 1] x radius
     std::vector<osgGlyphs::GlyphCulling> cullings = {osgGlyphs::GlyphCulling::Occlusion};
     /** Per-glyph ambient occlusion off, on, or both (--ao). */
     std::vector<bool> ambientOcclusion = {false};

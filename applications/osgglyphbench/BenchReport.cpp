@@ -5,9 +5,10 @@
 #include <iomanip>
 #include <iostream>
 
-const char* const CSV_HEADER = "technique,shape,n,width,height,frames,ms_median,ms_min,ms_max,first_frame_ms,"
-                               "gpu_bytes_per_glyph,data_path,coverage,radius,attributes,culling,overdraw,"
-                               "submitted,ao,ao_seconds,screen_effects,opacity,transparency,positions";
+const char* const CSV_HEADER =
+    "technique,shape,n,width,height,frames,ms_median,ms_min,ms_max,first_frame_ms,"
+    "gpu_bytes_per_glyph,data_path,coverage,radius,attributes,culling,overdraw,"
+    "submitted,ao,ao_seconds,screen_effects,opacity,transparency,positions,smallest_axis";
 
 namespace
 {
@@ -99,7 +100,8 @@ void writeCsvRow(std::ostream& csv, const BenchResult& result, const BenchSettin
         << ',' << (result.ambientOcclusion ? "on" : "off") << ',' << format(result.occlusionSeconds, 3) << ','
         << getScreenEffectsName(result.screenEffects) << ',' << format(result.opacity, 3) << ','
         << (result.opacity < 1.0f ? getTransparencyName(result.transparency) : "") << ','
-        << (settings.compressedPositions ? "16" : "float") << '\n'
+        << (settings.compressedPositions ? "16" : "float") << ','
+        << (osgGlyphs::isAxesShape(result.shape) ? format(settings.smallestAxis, 3) : "") << '\n'
         << std::flush;
 }
 

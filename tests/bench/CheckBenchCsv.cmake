@@ -6,7 +6,7 @@
 #         -DWIDTH=320 -DHEIGHT=240 -DFRAMES=3 -P CheckBenchCsv.cmake
 cmake_minimum_required(VERSION 3.25)
 
-set(header "technique,shape,n,width,height,frames,ms_median,ms_min,ms_max,first_frame_ms,gpu_bytes_per_glyph,data_path,coverage,radius,attributes,culling,overdraw,submitted,ao,ao_seconds,screen_effects,opacity,transparency,positions")
+set(header "technique,shape,n,width,height,frames,ms_median,ms_min,ms_max,first_frame_ms,gpu_bytes_per_glyph,data_path,coverage,radius,attributes,culling,overdraw,submitted,ao,ao_seconds,screen_effects,opacity,transparency,positions,smallest_axis")
 
 if(NOT EXISTS "${CSV}")
     message(FATAL_ERROR "${CSV} does not exist")

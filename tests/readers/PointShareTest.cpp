@@ -6,6 +6,9 @@
 #include <osgGlyphsData/PointShare>
 #include <osgGlyphsData/RandomCloud>
 
+#include <algorithm>
+#include <cmath>
+
 using namespace osgGlyphsData;
 using namespace readertest;
 
@@ -304,6 +307,42 @@ TEST(PointShare, RandomSharesAreTheGlyphsOfTheWholeCloud)
         EXPECT_TRUE(positions == whole->getPositions()->asVector()) << count << " shares";
         EXPECT_TRUE(vectors == whole->getVectors()->asVector()) << count << " shares";
         EXPECT_TRUE(scalars == whole->getScalars()->asVector()) << count << " shares";
+    }
+}
+
+TEST(PointShare, RandomEllipsoidsSpanTheirSmallestAxisShare)
+{
+    RandomCloudOptions options;
+    options.count = 2000;
+    options.radius = 0.02f;
+    options.shape = osgGlyphs::GlyphShape::Ellipsoid;
+    for (float smallest : {0.25f, 0.6f, 1.0f})
+    {
+        options.smallestAxis = smallest;
+        std::string error;
+        osg::ref_ptr<osgGlyphs::GlyphCloud> cloud = createRandomCloud(options, error);
+        ASSERT_TRUE(cloud.valid()) << error;
+        float least = 1.0f, most = 0.0f;
+        for (const osg::Vec3& axes : *cloud->getSemiAxes())
+        {
+            EXPECT_EQ(axes.x(), options.radius);
+            for (float other : {axes.y(), axes.z()})
+            {
+                least = std::min(least, other / options.radius);
+                most = std::max(most, other / options.radius);
+            }
+        }
+        EXPECT_GE(least, smallest * (1.0f - 1e-6f));
+        EXPECT_LT(least, smallest + 0.01f) << "4000 draws reach the share";
+        EXPECT_LE(most, 1.0f + 1e-6f);
+        EXPECT_GT(most, 0.99f);
+    }
+    for (float wrong : {0.0f, -0.5f, 1.5f, std::nanf("")})
+    {
+        options.smallestAxis = wrong;
+        std::string error;
+        EXPECT_FALSE(createRandomCloud(options, error).valid()) << wrong;
+        EXPECT_NE(error.find("smallest semi-axis share"), std::string::npos) << error;
     }
 }
 

@@ -85,9 +85,9 @@ osg::ref_ptr<osg::Vec3Array> createVectors(PointRange range, unsigned int seed)
     return vectors;
 }
 
-/** Semi-axes (radius, and two uniform in [0.25, 1] of it) and rotations uniform over SO(3)
+/** Semi-axes (radius, and two uniform in [smallest, 1] of it) and rotations uniform over SO(3)
  * (Shoemake's quaternions from three uniform numbers). */
-void setEllipsoids(GlyphCloud& cloud, PointRange range, unsigned int seed, float radius)
+void setEllipsoids(GlyphCloud& cloud, PointRange range, unsigned int seed, float radius, float smallest)
 {
     const uint64_t count = range.end - range.begin;
     UniformFloats uniform(seed, Stream::Ellipsoids, 5 * range.begin);
@@ -95,9 +95,12 @@ void setEllipsoids(GlyphCloud& cloud, PointRange range, unsigned int seed, float
     osg::ref_ptr<osg::Vec4Array> rotations = new osg::Vec4Array;
     semiAxes->reserve(count);
     rotations->reserve(count);
+    smallest = smallest >= 0.01f ? std::min(smallest, 1.0f) : 0.01f; // NaN too
+    const float spread = 1.0f - smallest;
     for (uint64_t i = 0; i < count; ++i)
     {
-        semiAxes->push_back(osg::Vec3(1.0f, 0.25f + 0.75f * uniform(), 0.25f + 0.75f * uniform()) * radius);
+        semiAxes->push_back(osg::Vec3(1.0f, smallest + spread * uniform(), smallest + spread * uniform()) *
+                            radius);
         const float u = uniform(), a = 2.0f * osg::PIf * uniform(), b = 2.0f * osg::PIf * uniform();
         const float s = std::sqrt(1.0f - u), t = std::sqrt(u);
         rotations->push_back(osg::Vec4(s * std::sin(a), s * std::cos(a), t * std::sin(b), t * std::cos(b)));
@@ -144,7 +147,7 @@ osg::ref_ptr<GlyphCloud> osgGlyphsData::createRandomCloud(const RandomCloudOptio
         cloud->setLengthScale(options.lengthScale > 0.0f ? options.lengthScale : 4.0f * radius);
     }
     if (isAxesShape(options.shape))
-        setEllipsoids(*cloud, range, options.seed, radius);
+        setEllipsoids(*cloud, range, options.seed, radius, options.smallestAxis);
     if (options.shape == GlyphShape::Superquadric)
         setExponents(*cloud, range, options.seed);
     cloud->setShape(options.shape);
@@ -160,6 +163,12 @@ osg::ref_ptr<GlyphCloud> osgGlyphsData::createRandomCloud(const RandomCloudOptio
     if (!checkPointShare(options.share, error))
     {
         error = "random cloud: " + error;
+        return nullptr;
+    }
+    if (!(options.smallestAxis > 0.0f && options.smallestAxis <= 1.0f))
+    {
+        error = "random cloud: the smallest semi-axis share " + std::to_string(options.smallestAxis) +
+                " is not in (0, 1]";
         return nullptr;
     }
     return createRandomCloud(options);
