@@ -6,8 +6,8 @@
     /usr/bin/python3 share/bench/results-page.py --output FILE
 
 Standard library only. It reads, from share/bench/:
-- results.csv, dense.csv and shapes.csv, written by osgglyphbench --csv (applications/osgglyphbench,
-  BenchReport.cpp: one row per case; no date or machine column);
+- results.csv, dense.csv, shapes.csv and shapes_round.csv, written by osgglyphbench --csv
+  (applications/osgglyphbench, BenchReport.cpp: one row per case; no date or machine column);
 - format_results.csv, written by share/bench/format_bench.py, and trajectory_results.csv, written
   by osgglyphtrajbench and share/bench/trajectory_bench.sh (rows of date, machine, suite, case,
   metric, value, unit).
@@ -46,6 +46,14 @@ OSGGLYPHBENCH_SOURCES = {
         "said": 'the README it was committed with says "one run on a quiet machine" and names no machine',
         "command": "osgglyphbench --techniques default,points-floor --culling off,occlusion --radius-spacing 0.4 "
         "--n 10000,31623,100000,316228,1000000 --frames 5 --plot dense.png",
+    },
+    "fd9c8df7fca948c947137c0fe106bc53d119e094": {
+        "commit": "a2fe8be",
+        "date": "2026-11-29",
+        "machine": "llvmpipe, 2 cores",
+        "said": "its commit message names the machine and the date",
+        "command": "osgglyphbench --techniques geometry-shader --shapes sphere,ellipsoid,superquadric "
+        "--culling off,occlusion --n 30000,300000 --radius-spacing 0.4 --frames 10 --repeat 3 --smallest-axis 1",
     },
     "2fadcfa5da0cffc65030721833dc04da10ed0b8e": {
         "commit": "ca16cf1",
@@ -232,20 +240,8 @@ def dense_series():
     return out
 
 
-def dense_shapes():
-    rows = read_rows("shapes.csv")
-    out = ["## Ellipsoids and superquadrics, dense", ""]
-    out += osgglyphbench_provenance("shapes.csv", rows)
-    out.append("")
-    out.append("Spheres of radius r = 0.4 times the mean spacing in the unit cube, and ellipsoids and "
-               "superquadrics of semi-axes r and r times two numbers uniform in [0.25, 1], in uniformly "
-               "random turns (the largest semi-axis is the spheres' radius); superquadrics' two exponents "
-               "uniform in [0.1, 1], from rounded boxes to ellipsoids. With culling off every glyph is drawn: "
-               "the cost of a glyph drawn. With occlusion culling (the default) the frame draws what can be "
-               "seen, and the other shapes, thinner than the spheres, hide less of the cloud behind them. "
-               "`/ sphere`: over the spheres' frame of the same N and culling. Fragments and submitted as "
-               "above.")
-    out.append("")
+def shapes_table(rows):
+    """Each shape's frame at each N and culling, over the spheres' of the same N and culling."""
     rows = [row for row in rows if row["technique"] == "geometry-shader"]
     by_case = {(row["shape"], row["culling"], int(row["n"])): row for row in rows}
     shapes = []
@@ -272,7 +268,34 @@ def dense_shapes():
                          fmt(number(row["overdraw"])) if row else "-",
                          fmt(number(row["submitted"])) if row else "-"]
             lines.append(line)
-    out += table(header, lines)
+    return table(header, lines)
+
+
+def dense_shapes():
+    rows = read_rows("shapes.csv")
+    out = ["## Ellipsoids and superquadrics, dense", ""]
+    out += osgglyphbench_provenance("shapes.csv", rows)
+    out.append("")
+    out.append("Spheres of radius r = 0.4 times the mean spacing in the unit cube, and ellipsoids and "
+               "superquadrics of semi-axes r and r times two numbers uniform in [0.25, 1], in uniformly "
+               "random turns (the largest semi-axis is the spheres' radius); superquadrics' two exponents "
+               "uniform in [0.1, 1], from rounded boxes to ellipsoids. With culling off every glyph is drawn: "
+               "the cost of a glyph drawn. With occlusion culling (the default) the frame draws what can be "
+               "seen, and the other shapes, thinner than the spheres, hide less of the cloud behind them. "
+               "`/ sphere`: over the spheres' frame of the same N and culling. Fragments and submitted as "
+               "above.")
+    out.append("")
+    out += shapes_table(rows)
+    rows = read_rows("shapes_round.csv")
+    out += ["", "### Every semi-axis the spheres' radius", ""]
+    out += osgglyphbench_provenance("shapes_round.csv", rows)
+    out.append("")
+    out.append("The same with `--smallest-axis 1`: the ellipsoids are spheres of radius r, drawn as "
+               "ellipsoids, and hide as much of the cloud as the spheres do (the same fragments and glyphs "
+               "submitted), so their ratio is the cost of the shape itself. The superquadrics are rounded "
+               "cubes of half-side r, larger than the spheres: more fragments.")
+    out.append("")
+    out += shapes_table(rows)
     return out
 
 
